@@ -1,0 +1,186 @@
+"""The JSON form of the mechanism model (same content as the edge list).
+
+::
+
+    {"name": "four-bar", "ground": "0",
+     "drivers": ["1"]  or  [{"link": "1", "omega": 20}],
+     "pairs": [{"links": ["0", "1"], "kind": "R", "point": "A"},
+               {"links": ["3", "0"], "kind": "P", "point": "C", "angle": 30},
+               {"links": ["1", "4"], "kind": "H", "flat": "4", "centers": ["O1", null]}],
+     "points": {"A": [0, 0], "M": {"xy": [0.1, 0.2], "on": "2"}}}
+
+>>> m = mechanism_from_json('{"drivers": ["1"], "pairs": [{"links": [0, 1], "kind": "R"}]}')
+>>> m.pairs[0].label
+'0–1 R'
+>>> mechanism_to_dict(m)["pairs"]
+[{'links': ['0', '1'], 'kind': 'R'}]
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+from .errors import EdgeListError, EdgeListProblem
+from .model import DRIVER_KEYS, Driver, Mechanism, Pair, PointDef, pair_from_tokens, validated
+
+__all__ = ["mechanism_from_dict", "mechanism_from_json", "mechanism_to_dict", "mechanism_to_json"]
+
+_PAIR_FIELDS = ("links", "kind", "point", "angle", "flat", "roller", "centers", "normal")
+
+
+def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
+    """Parse the JSON form of a mechanism.
+
+    Raises
+    ------
+    EdgeListError
+        Invalid JSON (with its line) or any problem :func:`mechanism_from_dict` finds.
+    """
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        line = text.splitlines()[exc.lineno - 1] if text.splitlines() else ""
+        raise EdgeListError(source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")])
+    return mechanism_from_dict(data, source)
+
+
+def _text(value: Any) -> str:
+    if isinstance(value, float) and value.is_integer():
+        return str(int(value))
+    return str(value)
+
+
+def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
+    """Build a validated mechanism from the JSON-shaped dict."""
+    problems: list[EdgeListProblem] = []
+
+    def bad(where: str, reason: str) -> None:
+        problems.append(EdgeListProblem(0, "", f"{where}: {reason}"))
+
+    if not isinstance(data, dict):
+        raise EdgeListError(source, [EdgeListProblem(0, "", "the top level must be an object")])
+    unknown = set(data) - {"name", "ground", "drivers", "pairs", "points"}
+    if unknown:
+        bad("top level", f"unknown keys {sorted(unknown)}")
+    pairs: list[Pair] = []
+    raw_pairs = data.get("pairs", [])
+    if not isinstance(raw_pairs, list):
+        bad("pairs", "must be a list")
+        raw_pairs = []
+    for i, item in enumerate(raw_pairs, start=1):
+        where = f"pairs[{i - 1}]"
+        if not isinstance(item, dict):
+            bad(where, "must be an object")
+            continue
+        extra = set(item) - set(_PAIR_FIELDS)
+        links = item.get("links")
+        if extra:
+            bad(where, f"unknown keys {sorted(extra)}")
+            continue
+        if not isinstance(links, list) or len(links) != 2:
+            bad(where, "'links' must be a list of two link names")
+            continue
+        tokens = [_text(links[0]), _text(links[1]), str(item.get("kind", ""))]
+        if item.get("point") is not None:
+            tokens.append(_text(item["point"]))
+        for key in ("angle", "flat", "roller", "normal"):
+            if item.get(key) is not None:
+                tokens.append(f"{key}={_text(item[key])}")
+        if item.get("centers") is not None:
+            c = item["centers"]
+            if not isinstance(c, list) or len(c) != 2:
+                bad(where, "'centers' must be a list of two point names (or null)")
+                continue
+            tokens.append("centers=" + ",".join("" if v is None else _text(v) for v in c))
+        pair, why = pair_from_tokens(tokens, len(pairs) + 1, 0)
+        if pair is None:
+            bad(where, why)
+        else:
+            pairs.append(pair)
+    drivers: list[Driver] = []
+    for i, item in enumerate(data.get("drivers", []) or []):
+        if isinstance(item, (str, int)):
+            drivers.append(Driver(_text(item)))
+        elif isinstance(item, dict) and "link" in item:
+            motion = []
+            for key, value in item.items():
+                if key == "link":
+                    continue
+                if key not in DRIVER_KEYS or not isinstance(value, (int, float)):
+                    bad(f"drivers[{i}]", f"bad option {key!r}")
+                else:
+                    motion.append((key, float(value)))
+            drivers.append(Driver(_text(item["link"]), tuple(motion)))
+        else:
+            bad(f"drivers[{i}]", "must be a link name or an object with 'link'")
+    points: dict[str, PointDef] = {}
+    raw_points = data.get("points", {}) or {}
+    if not isinstance(raw_points, dict):
+        bad("points", "must be an object NAME: [x, y]")
+        raw_points = {}
+    for key, value in raw_points.items():
+        on = None
+        if isinstance(value, dict):
+            on = value.get("on")
+            value = value.get("xy")
+        if (
+            not isinstance(value, list)
+            or len(value) != 2
+            or not all(isinstance(v, (int, float)) and math.isfinite(v) for v in value)
+        ):
+            bad(f"points[{key!r}]", "must be [x, y] with finite numbers")
+            continue
+        points[str(key)] = PointDef(str(key), float(value[0]), float(value[1]), on)
+    if problems:
+        raise EdgeListError(source, problems)
+    mechanism = Mechanism(
+        tuple(pairs),
+        _text(data.get("ground", "0")),
+        tuple(drivers),
+        points,
+        str(data.get("name", "")),
+        source,
+    )
+    return validated(mechanism)
+
+
+def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
+    """The JSON-shaped dict of ``mechanism`` (inverse of :func:`mechanism_from_dict`)."""
+    out: dict[str, Any] = {}
+    if mechanism.name:
+        out["name"] = mechanism.name
+    out["ground"] = mechanism.ground
+    if mechanism.drivers:
+        out["drivers"] = [
+            {"link": d.link, **dict(d.motion)} if d.motion else d.link for d in mechanism.drivers
+        ]
+    pairs = []
+    for p in mechanism.pairs:
+        item: dict[str, Any] = {"links": [p.a, p.b], "kind": p.kind.value}
+        if p.point is not None:
+            item["point"] = p.point
+        for key, value in (
+            ("angle", p.angle_deg),
+            ("flat", p.flat),
+            ("roller", p.roller),
+            ("normal", p.normal_deg),
+        ):
+            if value is not None:
+                item[key] = value
+        if p.centers is not None:
+            item["centers"] = list(p.centers)
+        pairs.append(item)
+    out["pairs"] = pairs
+    if mechanism.points:
+        out["points"] = {
+            p.name: ({"xy": [p.x, p.y], "on": p.on} if p.on else [p.x, p.y])
+            for p in mechanism.points.values()
+        }
+    return out
+
+
+def mechanism_to_json(mechanism: Mechanism, indent: int | None = 2) -> str:
+    """The JSON text of ``mechanism``."""
+    return json.dumps(mechanism_to_dict(mechanism), indent=indent, ensure_ascii=False)

@@ -1,0 +1,475 @@
+"""The kinematic graph: links are nodes, kinematic pairs are edges.
+
+A :class:`Mechanism` is immutable. It wraps a frozen networkx ``MultiGraph``
+whose nodes are link names and whose edges are :class:`Pair` records (keyed by
+the pair's id, stored in the edge attribute ``pair``), plus the points of the
+sketch. Revolute pairs that name the same point form one compound hinge: a
+hinge joining k links is k - 1 pairs. Every transformation returns a new
+Mechanism; nothing here computes anything beyond validation.
+
+>>> m = Mechanism.from_pairs([("0", "1", "R", "A"), ("1", "2", "R", "B"),
+...                           ("2", "3", "R", "C"), ("3", "0", "R", "D")],
+...                          drivers=["1"], name="four-bar")
+>>> m.moving_links
+('1', '2', '3')
+>>> [p.label for p in m.pairs][:2]
+['0–1 R A', '1–2 R B']
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass, field
+from enum import Enum
+from types import MappingProxyType
+from typing import Any
+
+import networkx as nx
+
+from .errors import EdgeListError, EdgeListProblem
+
+__all__ = [
+    "DRIVER_KEYS",
+    "Driver",
+    "Hinge",
+    "Mechanism",
+    "Pair",
+    "PairKind",
+    "PointDef",
+    "pair_from_tokens",
+    "validated",
+]
+
+#: motion keys accepted on a ``driver`` line (rad/s, rad/s², m/s, m/s²)
+DRIVER_KEYS = ("omega", "epsilon", "v", "a")
+
+
+class PairKind(Enum):
+    """Kind of a kinematic pair.
+
+    ``R`` revolute and ``P`` prismatic are lower pairs of class 5 (P5, two
+    constraints each); ``H`` is a higher pair of class 4 (P4, one constraint):
+    a cam contact or a gear mesh.
+    """
+
+    R = "R"
+    P = "P"
+    H = "H"
+
+    @property
+    def constraints(self) -> int:
+        """Number of scalar constraints the pair imposes in the plane."""
+        return 1 if self is PairKind.H else 2
+
+
+@dataclass(frozen=True, slots=True)
+class Pair:
+    """One kinematic pair between links ``a`` and ``b``.
+
+    Parameters
+    ----------
+    id : int
+        1-based position of the pair in its mechanism.
+    kind : PairKind
+    a, b : str
+        The two links it joins.
+    point : str or None
+        R: the hinge point (pairs naming the same point form one compound
+        hinge). P: a point of the slide line. H: the contact point.
+    angle_deg : float or None
+        P only: direction of the slide line, degrees counter-clockwise, as
+        written in the file (``angle`` gives it in radians).
+    flat : str or None
+        H only: the link whose profile is a straight line at the contact.
+    roller : str or None
+        H only: the link that is a roller on this contact.
+    centers : tuple of (str or None) or None
+        H only: centres of curvature of the profiles of ``a`` and ``b``.
+    normal_deg : float or None
+        H only: direction of the common normal at the contact, degrees
+        (``normal`` gives it in radians).
+    line_no : int
+        Line of the description it came from (0 when built in Python).
+    """
+
+    id: int
+    kind: PairKind
+    a: str
+    b: str
+    point: str | None = None
+    angle_deg: float | None = None
+    flat: str | None = None
+    roller: str | None = None
+    centers: tuple[str | None, str | None] | None = None
+    normal_deg: float | None = None
+    line_no: int = 0
+
+    @property
+    def angle(self) -> float | None:
+        """Slide direction of a P pair in radians."""
+        return None if self.angle_deg is None else math.radians(self.angle_deg)
+
+    @property
+    def normal(self) -> float | None:
+        """Contact normal of an H pair in radians."""
+        return None if self.normal_deg is None else math.radians(self.normal_deg)
+
+    @property
+    def links(self) -> tuple[str, str]:
+        return (self.a, self.b)
+
+    def other(self, link: str) -> str:
+        """The link at the other end of the pair."""
+        return self.b if link == self.a else self.a
+
+    @property
+    def label(self) -> str:
+        """Short human label, e.g. ``'1–2 R B'``."""
+        return f"{self.a}–{self.b} {self.kind.value}" + (f" {self.point}" if self.point else "")
+
+    def center_of(self, link: str) -> str | None:
+        """Centre of curvature of ``link``'s profile at this higher pair."""
+        if self.centers is None:
+            return None
+        return self.centers[0] if link == self.a else self.centers[1]
+
+    def __repr__(self) -> str:
+        return f"Pair({self.id}, {self.label!r})"
+
+
+@dataclass(frozen=True, slots=True)
+class PointDef:
+    """Coordinates of a named point at the sketch pose (metres).
+
+    ``on`` names the link the point is fixed to when it is a marker, not a
+    pair location.
+    """
+
+    name: str
+    x: float
+    y: float
+    on: str | None = None
+    line_no: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Driver:
+    """A driving link and its prescribed motion (``omega``, ``epsilon``, ``v``, ``a``)."""
+
+    link: str
+    motion: tuple[tuple[str, float], ...] = ()
+    line_no: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Hinge:
+    """A revolute joint as a point: the links that meet at it and its pairs.
+
+    A hinge of k links carries k - 1 revolute pairs.
+    """
+
+    point: str
+    links: tuple[str, ...]
+    pairs: tuple[int, ...]
+
+
+def _freeze_graph(pairs: Iterable[Pair], links: Iterable[str]) -> nx.MultiGraph:
+    g = nx.MultiGraph()
+    g.add_nodes_from(links)
+    g.add_edges_from((p.a, p.b, p.id, {"pair": p}) for p in pairs)
+    return nx.freeze(g)
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """An immutable planar mechanism: links, pairs, ground, drivers, points.
+
+    Build it with :meth:`from_pairs`, :func:`~structure.edgelist.parse_edgelist`
+    or :func:`~structure.jsonformat.mechanism_from_dict`; each validates the
+    description and raises :class:`~structure.errors.EdgeListError` listing
+    every problem found.
+    """
+
+    pairs: tuple[Pair, ...]
+    ground: str = "0"
+    drivers: tuple[Driver, ...] = ()
+    points: Mapping[str, PointDef] = field(default_factory=dict)
+    name: str = ""
+    source: str = "<python>"
+    graph: nx.MultiGraph = field(init=False, repr=False, compare=False)
+    links: tuple[str, ...] = field(init=False, repr=False, compare=False)
+    hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "points", MappingProxyType(dict(self.points)))
+        seen: dict[str, None] = {self.ground: None}
+        for p in self.pairs:
+            seen.setdefault(p.a)
+            seen.setdefault(p.b)
+        links = tuple(seen)
+        object.__setattr__(self, "links", links)
+        object.__setattr__(self, "graph", _freeze_graph(self.pairs, links))
+        object.__setattr__(self, "hinges", _hinges(self.pairs))
+
+    # ------------------------------------------------------------------ build
+    @classmethod
+    def from_pairs(
+        cls,
+        pairs: Iterable[Any],
+        *,
+        ground: str = "0",
+        drivers: Iterable[str | Driver] = (),
+        points: Mapping[str, tuple[float, float]] | Iterable[PointDef] = (),
+        name: str = "",
+        source: str = "<python>",
+    ) -> Mechanism:
+        """Build and validate a mechanism from Python data.
+
+        Each pair is a :class:`Pair` or a tuple ``(a, b, kind[, point][, options])``
+        where ``options`` is a dict with the same keys as the edge-list format
+        (``angle`` in degrees, ``flat``, ``roller``, ``centers``, ``normal``).
+
+        >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R", "B"),
+        ...                           ("2", "0", "P", "C", {"angle": 0})])
+        >>> [p.kind.value for p in m.pairs]
+        ['R', 'R', 'P']
+        """
+        problems: list[EdgeListProblem] = []
+        built: list[Pair] = []
+        for i, item in enumerate(pairs, start=1):
+            if isinstance(item, Pair):
+                built.append(item)
+                continue
+            item = tuple(item)
+            options = item[-1] if item and isinstance(item[-1], Mapping) else {}
+            head = [str(t) for t in (item[:-1] if options else item)]
+            tokens = head + [f"{k}={_option_text(v)}" for k, v in options.items()]
+            pair, why = pair_from_tokens(tokens, i, 0)
+            if pair is None:
+                problems.append(EdgeListProblem(0, " ".join(tokens), f"pair {i}: {why}"))
+            else:
+                built.append(pair)
+        if isinstance(points, Mapping):
+            pts = {k: PointDef(k, float(v[0]), float(v[1])) for k, v in points.items()}
+        else:
+            pts = {p.name: p for p in points}
+        drv = tuple(d if isinstance(d, Driver) else Driver(str(d)) for d in drivers)
+        if problems:
+            raise EdgeListError(source, problems)
+        return validated(cls(tuple(built), str(ground), drv, pts, name, source))
+
+    def evolve(self, **changes: Any) -> Mechanism:
+        """A new mechanism with some fields replaced (``pairs``, ``drivers``, ...)."""
+        fields = {
+            "pairs": self.pairs,
+            "ground": self.ground,
+            "drivers": self.drivers,
+            "points": self.points,
+            "name": self.name,
+            "source": self.source,
+        }
+        fields.update(changes)
+        if "drivers" in changes:
+            fields["drivers"] = tuple(
+                d if isinstance(d, Driver) else Driver(str(d)) for d in fields["drivers"]
+            )
+        return Mechanism(**fields)
+
+    def with_drivers(self, drivers: Iterable[str]) -> Mechanism:
+        """The same mechanism with another choice of driving links."""
+        old = {d.link: d for d in self.drivers}
+        return self.evolve(drivers=tuple(old.get(d, Driver(d)) for d in drivers))
+
+    # ---------------------------------------------------------------- queries
+    @property
+    def driver_links(self) -> tuple[str, ...]:
+        return tuple(d.link for d in self.drivers)
+
+    @property
+    def moving_links(self) -> tuple[str, ...]:
+        """Links other than the ground, in order of first appearance."""
+        return tuple(link for link in self.links if link != self.ground)
+
+    def pairs_of(self, link: str) -> Iterator[Pair]:
+        """The pairs that touch ``link``."""
+        for _, _, data in self.graph.edges(link, data=True):
+            yield data["pair"]
+
+    def pair(self, pair_id: int) -> Pair:
+        return self.pairs[pair_id - 1] if self.pairs[pair_id - 1].id == pair_id else next(
+            p for p in self.pairs if p.id == pair_id
+        )
+
+    def coordinates(self, point: str) -> tuple[float, float] | None:
+        p = self.points.get(point)
+        return None if p is None else (p.x, p.y)
+
+    def __repr__(self) -> str:
+        title = f" {self.name!r}" if self.name else ""
+        return f"<Mechanism{title}: {len(self.moving_links)} moving links, {len(self.pairs)} pairs>"
+
+
+_PAIR_KEYS = {
+    PairKind.R: (),
+    PairKind.P: ("angle",),
+    PairKind.H: ("flat", "roller", "centers", "normal"),
+}
+
+
+def _angle(text: str) -> float:
+    value = float(text)
+    if not math.isfinite(value):
+        raise ValueError(text)
+    return value
+
+
+def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pair | None, str]:
+    """Read ``a b KIND [POINT] [key=value ...]`` into a Pair, or say what is wrong.
+
+    Returns ``(pair, "")`` or ``(None, reason)``; never raises on bad tokens.
+
+    >>> pair_from_tokens("3 0 P C angle=90".split(), 1, 5)[0].angle
+    1.5707963267948966
+    >>> pair_from_tokens("1 2 Q".split(), 1, 5)[1]
+    "unknown pair kind 'Q' (use R, P or H)"
+    """
+    if len(tokens) < 3:
+        return None, "a pair needs at least 'a b KIND'"
+    a, b, kind_text = tokens[0], tokens[1], tokens[2]
+    try:
+        kind = PairKind(kind_text)
+    except ValueError:
+        return None, f"unknown pair kind {kind_text!r} (use R, P or H)"
+    if a == b:
+        return None, f"pair joins link {a} to itself"
+    rest = tokens[3:]
+    point = None
+    if rest and "=" not in rest[0]:
+        point, rest = rest[0], rest[1:]
+    opts: dict[str, str] = {}
+    for tok in rest:
+        key, eq, value = tok.partition("=")
+        if not eq or not key or not value:
+            return None, f"unexpected token {tok!r} (options are key=value)"
+        if key not in _PAIR_KEYS[kind]:
+            allowed = ", ".join(_PAIR_KEYS[kind]) or "none"
+            return None, f"unknown option {key!r} for a {kind.value} pair (allowed: {allowed})"
+        if key in opts:
+            return None, f"option {key!r} given twice"
+        opts[key] = value
+    fields: dict[str, Any] = {}
+    try:
+        if "angle" in opts:
+            fields["angle_deg"] = _angle(opts["angle"])
+        if "normal" in opts:
+            fields["normal_deg"] = _angle(opts["normal"])
+    except ValueError:
+        return None, "angle and normal must be finite numbers of degrees"
+    if "flat" in opts:
+        fields["flat"] = opts["flat"]
+    if "roller" in opts:
+        fields["roller"] = opts["roller"]
+    if "centers" in opts:
+        parts = opts["centers"].split(",")
+        if len(parts) != 2 or not any(parts):
+            return None, "centers=O1,O2 names the centres of curvature on a and b (one may be empty)"
+        fields["centers"] = (parts[0] or None, parts[1] or None)
+    return Pair(pair_id, kind, a, b, point, line_no=line_no, **fields), ""
+
+
+def _option_text(value: Any) -> str:
+    if isinstance(value, (tuple, list)):
+        return ",".join("" if v is None else str(v) for v in value)
+    return str(value)
+
+
+def _hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:
+    """Group revolute pairs into hinges by point name (unnamed: one hinge each)."""
+    by_point: dict[str, list[Pair]] = {}
+    out: list[Hinge] = []
+    for p in pairs:
+        if p.kind is not PairKind.R:
+            continue
+        if p.point is None:
+            out.append(Hinge(f"{p.a}–{p.b}#{p.id}", (p.a, p.b), (p.id,)))
+        else:
+            by_point.setdefault(p.point, []).append(p)
+    for point, group in by_point.items():
+        links: dict[str, None] = {}
+        for p in group:
+            links.setdefault(p.a)
+            links.setdefault(p.b)
+        out.append(Hinge(point, tuple(links), tuple(p.id for p in group)))
+    return tuple(out)
+
+
+def validated(m: Mechanism) -> Mechanism:
+    """Check a mechanism's topology; raise one EdgeListError listing every problem.
+
+    Checks: at least one pair; no pair from a link to itself; compound hinges
+    whose pairs connect all their links without a cycle; every link connected
+    to the ground; drivers that exist and are joined to the ground; options
+    that name links of their own pair.
+    """
+    problems: list[EdgeListProblem] = []
+
+    def bad(line_no: int, reason: str, line: str = "") -> None:
+        problems.append(EdgeListProblem(line_no, line, reason))
+
+    if not m.pairs:
+        bad(0, "no kinematic pairs: the description is empty")
+        raise EdgeListError(m.source, problems)
+    for p in m.pairs:
+        for role, link in (("flat", p.flat), ("roller", p.roller)):
+            if link is not None and link not in (p.a, p.b):
+                bad(p.line_no, f"{role}={link} is not one of the pair's links {p.a}, {p.b}")
+        if p.flat is not None and p.roller is not None and p.flat == p.roller:
+            bad(p.line_no, f"link {p.flat} cannot be both flat and the roller")
+    for h in m.hinges:
+        if len(h.pairs) < 2:
+            continue
+        ug = nx.MultiGraph()
+        ug.add_nodes_from(h.links)
+        ug.add_edges_from(m.pair(i).links for i in h.pairs)
+        first = m.pair(h.pairs[0])
+        if not nx.is_connected(ug):
+            parts = " | ".join(",".join(sorted(c)) for c in nx.connected_components(ug))
+            bad(first.line_no, f"the pairs at point {h.point} do not connect its links ({parts})")
+        elif ug.number_of_edges() != len(h.links) - 1:
+            cyc = m.pair(h.pairs[-1])
+            bad(
+                cyc.line_no,
+                f"the pairs at point {h.point} close a cycle: a hinge of {len(h.links)} "
+                f"links has {len(h.links) - 1} pairs, {ug.number_of_edges()} are listed",
+                cyc.label,
+            )
+    if m.ground not in m.graph or m.graph.degree(m.ground) == 0:
+        bad(0, f"the ground {m.ground} is joined to no link")
+    else:
+        reach = nx.node_connected_component(m.graph, m.ground)
+        loose = [link for link in m.links if link not in reach]
+        if loose:
+            bad(0, f"link(s) not connected to the ground {m.ground}: {', '.join(loose)}")
+    seen_drivers: set[str] = set()
+    for d in m.drivers:
+        if d.link in seen_drivers:
+            bad(d.line_no, f"driver {d.link} is named twice")
+        seen_drivers.add(d.link)
+        if d.link == m.ground:
+            bad(d.line_no, f"the ground {d.link} cannot be a driver")
+        elif d.link not in m.graph:
+            bad(d.line_no, f"driver {d.link} is not a link of the mechanism")
+        elif not m.graph.has_edge(d.link, m.ground):
+            bad(d.line_no, f"driver {d.link} is not joined to the ground {m.ground}")
+        for key, _ in d.motion:
+            if key not in DRIVER_KEYS:
+                bad(d.line_no, f"unknown driver option {key!r} (use {', '.join(DRIVER_KEYS)})")
+    for p in m.points.values():
+        if not (math.isfinite(p.x) and math.isfinite(p.y)):
+            bad(p.line_no, f"point {p.name} has non-finite coordinates")
+        if p.on is not None and p.on not in m.graph:
+            bad(p.line_no, f"point {p.name} is fixed to unknown link {p.on}")
+    if problems:
+        raise EdgeListError(m.source, problems)
+    return m

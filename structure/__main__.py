@@ -1,0 +1,7 @@
+"""``python -m structure`` runs the ``assur`` command line."""
+
+import sys
+
+from .cli import main
+
+sys.exit(main())

@@ -1,0 +1,432 @@
+"""Assur-group decomposition and classification.
+
+The driven constraint system of a lower-pair mechanism (pins as points) is put
+in block-triangular form (:mod:`structure.dulmage_mendelsohn`). Each link is
+known once all its unknowns are; the links that become known in the same
+irreducible block form one Assur group (a minimal chain with W = 0 once its
+external pairs are attached to known links). The block order is the solve
+order, the textbook's order of detaching groups is its reverse. This is exact
+and polynomial, O(E·√V)-like in practice, and needs no list of templates:
+groups of any class come out.
+
+Class of a group: ``max(2, most internal pairs on one link, largest contour)``,
+a contour being a simple cycle of the bipartite graph links ↔ internal joints,
+sized by its joints. Order: number of external pairs. A dyad's kind reads its
+pairs external–middle–external (RRR, RRP, RPR, PRP, RPP).
+
+References: L. V. Assur (1914); I. I. Artobolevsky, *Theory of Mechanisms and
+Machines*; B. Servatius, O. Shai, W. Whiteley, "Combinatorial
+characterization of the Assur graphs from engineering", EJC 31 (2010).
+
+>>> from structure.edgelist import parse_edgelist
+>>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
+>>> d = decompose(m)
+>>> [(g.links, g.assur_class, g.order, g.kind) for g in d.groups]
+[(('2', '3'), 2, 2, 'RRR')]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import networkx as nx
+
+from .constraints import MissingGeometry, constraint_system, sketch_realization
+from .errors import DecompositionError, MobilityError
+from .model import Mechanism, PairKind, validated
+from .rank import RankAnalysis, generic_rank, geometric_rank
+
+__all__ = [
+    "AssurGroup",
+    "Decomposition",
+    "GroupPair",
+    "classify_group",
+    "decompose",
+    "driver_candidates",
+    "roman",
+]
+
+
+def roman(number: int) -> str:
+    """Roman numeral of a class: ``roman(4) == 'IV'``."""
+    out = ""
+    for value, letters in (
+        (1000, "M"), (900, "CM"), (500, "D"), (400, "CD"), (100, "C"), (90, "XC"),
+        (50, "L"), (40, "XL"), (10, "X"), (9, "IX"), (5, "V"), (4, "IV"), (1, "I"),
+    ):  # fmt: skip
+        while number >= value:
+            out += letters
+            number -= value
+    return out
+
+
+@dataclass(frozen=True, slots=True)
+class GroupPair:
+    """A pair of an Assur group: ``links[0]`` is a group link.
+
+    External pairs join a group link to a known link (``links[1]``); internal
+    pairs join two group links. A compound hinge is expanded canonically.
+    """
+
+    kind: PairKind
+    links: tuple[str, str]
+    point: str | None
+    external: bool
+
+
+@dataclass(frozen=True, slots=True)
+class AssurGroup:
+    """One Assur group: links, pairs, class, order and (for dyads) kind."""
+
+    links: tuple[str, ...]
+    pairs: tuple[GroupPair, ...]
+    assur_class: int
+    order: int
+    kind: str | None = None
+
+    @property
+    def external_pairs(self) -> tuple[GroupPair, ...]:
+        return tuple(p for p in self.pairs if p.external)
+
+    @property
+    def internal_pairs(self) -> tuple[GroupPair, ...]:
+        return tuple(p for p in self.pairs if not p.external)
+
+    @property
+    def known_links(self) -> tuple[str, ...]:
+        """Links outside the group that its external pairs attach to."""
+        return tuple(dict.fromkeys(p.links[1] for p in self.external_pairs))
+
+    @property
+    def label(self) -> str:
+        """``'II(2,3)'`` style label."""
+        return f"{roman(self.assur_class)}({','.join(self.links)})"
+
+    def __repr__(self) -> str:
+        kind = f" {self.kind}" if self.kind else ""
+        return f"AssurGroup({self.label}, order {self.order}{kind})"
+
+
+@dataclass(frozen=True)
+class Decomposition:
+    """Groups in solve order, their dependency DAG, and what was set aside.
+
+    ``dag`` has one node per group index; an edge ``i -> j`` means group ``j``
+    is attached to a link of group ``i``. ``removed_links`` and
+    ``removed_pairs`` are the redundant links/pairs left out of the
+    decomposition (``mechanism`` is what remains).
+    """
+
+    mechanism: Mechanism
+    drivers: tuple[str, ...]
+    groups: tuple[AssurGroup, ...]
+    dag: nx.DiGraph = field(repr=False)
+    removed_links: tuple[str, ...] = ()
+    removed_pairs: tuple[int, ...] = ()
+
+    @property
+    def mechanism_class(self) -> int:
+        return max((g.assur_class for g in self.groups), default=1)
+
+    @property
+    def formula(self) -> str:
+        """``'I(1) → II(2,3) → III(4,5,6,7)'``."""
+        parts = [f"I({d})" for d in self.drivers] + [g.label for g in self.groups]
+        return " → ".join(parts)
+
+    @property
+    def textbook_formula(self) -> str:
+        """``'1 = 1 + 0 + 0'``: W equals one per driver plus zero per group."""
+        terms = ["1"] * len(self.drivers) + ["0"] * len(self.groups)
+        return f"{len(self.drivers)} = " + " + ".join(terms)
+
+
+def driver_candidates(mechanism: Mechanism) -> tuple[str, ...]:
+    """Links joined to the ground by an R or P pair, in order of appearance."""
+    out: dict[str, None] = {}
+    for p in mechanism.pairs:
+        if p.kind is not PairKind.H and mechanism.ground in p.links:
+            other = p.other(mechanism.ground)
+            if other != mechanism.ground:
+                out.setdefault(other)
+    return tuple(out)
+
+
+def _analysis(mechanism: Mechanism, drivers: Sequence[str]) -> RankAnalysis:
+    """Generic rank, replaced by the sketch's rank when coordinates are complete."""
+    system = constraint_system(mechanism, drivers)
+    generic = generic_rank(system)
+    if mechanism.points:
+        try:
+            return geometric_rank(system, sketch_realization(system))
+        except MissingGeometry:
+            pass
+    return generic
+
+
+def _without_link(mechanism: Mechanism, link: str) -> Mechanism | None:
+    pairs = tuple(p for p in mechanism.pairs if link not in p.links)
+    try:
+        return validated(mechanism.evolve(pairs=pairs))
+    except Exception:  # noqa: BLE001 - a removal that disconnects the chain is no candidate
+        return None
+
+
+def _set_aside_redundancy(
+    mechanism: Mechanism, drivers: Sequence[str], analysis: RankAnalysis
+) -> tuple[Mechanism, list[str], list[int]]:
+    """Remove redundant links (textbook: 'ràng buộc trùng') until the drivers determine all."""
+    removed_links: list[str] = []
+    removed_pairs: list[int] = []
+    current = mechanism
+    for _ in range(len(mechanism.pairs)):
+        if not analysis.dependent_pairs and not analysis.free:
+            break
+        worst = max(analysis.dependent_pairs) if analysis.dependent_pairs else None
+        if worst is None:
+            break
+        pair = current.pair(worst)
+        best = None
+        for link in (pair.b, pair.a):
+            if link == current.ground or link in drivers:
+                continue
+            trial = _without_link(current, link)
+            if trial is None:
+                continue
+            trial_analysis = _analysis(trial, drivers)
+            if sum(trial_analysis.dependent.values()) < sum(analysis.dependent.values()) and (
+                not trial_analysis.free
+            ):
+                best = (link, trial, trial_analysis)
+                break
+        if best is None:
+            trial = validated(current.evolve(pairs=tuple(p for p in current.pairs if p.id != worst)))
+            removed_pairs.append(worst)
+            current, analysis = trial, _analysis(trial, drivers)
+            continue
+        link, current, analysis = best
+        removed_links.append(link)
+        removed_pairs.extend(p.id for p in mechanism.pairs if link in p.links and p.id not in removed_pairs)
+    return current, removed_links, removed_pairs
+
+
+def decompose(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Decomposition:
+    """Split a lower-pair mechanism into Assur groups in solve order.
+
+    ``drivers`` defaults to the mechanism's own. Redundant constraints are set
+    aside first (the redundant link is removed, as the textbook does).
+
+    Raises
+    ------
+    DecompositionError
+        Higher pairs present (replace them first), or links the drivers do not
+        determine.
+    MobilityError
+        A driver whose motion the other pairs already fix.
+    """
+    drivers = tuple(mechanism.driver_links if drivers is None else drivers)
+    if any(p.kind is PairKind.H for p in mechanism.pairs):
+        raise DecompositionError("replace the higher pairs before decomposing")
+    analysis = _analysis(mechanism, drivers)
+    if analysis.dependent_drivers:
+        raise MobilityError(
+            "the motion of driver(s) "
+            + ", ".join(analysis.dependent_drivers)
+            + " is already fixed by the other pairs and drivers"
+        )
+    current, removed_links, removed_pairs = mechanism, [], []
+    if analysis.dependent_pairs:
+        current, removed_links, removed_pairs = _set_aside_redundancy(mechanism, drivers, analysis)
+    system = constraint_system(current, drivers)
+    structural = generic_rank(system)
+    if structural.blocks is None:
+        loose = sorted(
+            {system.unknowns[u].owner for u, _ in structural.free if u >= 0}, key=current.links.index
+        )
+        raise DecompositionError(
+            "the drivers do not determine link(s) " + ", ".join(loose or ["?"]), loose
+        )
+    return _groups_from_blocks(current, drivers, structural, removed_links, removed_pairs)
+
+
+def _groups_from_blocks(
+    mechanism: Mechanism,
+    drivers: Sequence[str],
+    analysis: RankAnalysis,
+    removed_links: Sequence[str],
+    removed_pairs: Sequence[int],
+) -> Decomposition:
+    system = analysis.system
+    assert analysis.blocks is not None
+    block_of = [0] * len(system.unknowns)
+    for b, units in enumerate(analysis.blocks):
+        for u in units:
+            block_of[u] = b
+    ground = mechanism.ground
+    done: dict[str, int] = {ground: -1}
+    for link in mechanism.moving_links:
+        done[link] = max(block_of[system.pos[link]], block_of[system.ang[link]])
+    driver_set = set(drivers)
+    members: dict[int, list[str]] = {}
+    for link in mechanism.moving_links:
+        if link not in driver_set:
+            members.setdefault(done[link], []).append(link)
+    built = {b: _build_group(mechanism, links, done) for b, links in members.items()}
+    block_of_link = {link: b for b, links in members.items() for link in links}
+    block_dag = nx.DiGraph()
+    block_dag.add_nodes_from(built)
+    for b, g in built.items():
+        for known in g.known_links:
+            if known in block_of_link:
+                block_dag.add_edge(block_of_link[known], b)
+    position = {link: i for i, link in enumerate(mechanism.links)}
+    order = list(
+        nx.lexicographical_topological_sort(
+            block_dag, key=lambda b: min(position[x] for x in members[b])
+        )
+    )
+    index = {b: i for i, b in enumerate(order)}
+    groups = tuple(built[b] for b in order)
+    dag = nx.DiGraph()
+    dag.add_nodes_from(range(len(groups)))
+    dag.add_edges_from((index[u], index[v]) for u, v in block_dag.edges)
+    return Decomposition(
+        mechanism, tuple(drivers), groups, nx.freeze(dag), tuple(removed_links), tuple(removed_pairs)
+    )
+
+
+def _build_group(mechanism: Mechanism, links: list[str], done: dict[str, int]) -> AssurGroup:
+    members = set(links)
+    level = done[links[0]]
+    pairs: list[GroupPair] = []
+    joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
+    external_letter: dict[str, str] = {}
+    middle_letter = ""
+    compound = {h.point: h for h in mechanism.hinges if len(h.links) > 2}
+    seen_hinges: set[str] = set()
+    seen_pairs: set[int] = set()
+    for link in links:
+        for p in mechanism.pairs_of(link):
+            if p.id in seen_pairs:
+                continue
+            seen_pairs.add(p.id)
+            other = p.other(link)
+            h = compound.get(p.point) if p.kind is PairKind.R and p.point else None
+            if h is not None:
+                if h.point in seen_hinges:
+                    continue
+                seen_hinges.add(h.point)
+                inside = [x for x in h.links if x in members]
+                known = [x for x in h.links if x not in members and done[x] < level]
+                for x in inside[1:]:
+                    pairs.append(GroupPair(PairKind.R, (inside[0], x), h.point, False))
+                if len(inside) > 1:
+                    joints.append(tuple(inside))
+                    middle_letter = "R"
+                if known:
+                    pairs.append(GroupPair(PairKind.R, (inside[0], known[0]), h.point, True))
+                    external_letter.setdefault(inside[0], "R")
+                continue
+            if other in members:
+                pairs.append(GroupPair(p.kind, (link, other), p.point, False))
+                joints.append((link, other))
+                middle_letter = p.kind.value
+            elif done[other] < level:
+                pairs.append(GroupPair(p.kind, (link, other), p.point, True))
+                external_letter.setdefault(link, p.kind.value)
+    n_external = sum(1 for p in pairs if p.external)
+    if 3 * len(links) != 2 * len(pairs):
+        raise DecompositionError(
+            f"group {','.join(links)} has {len(pairs)} pairs for {len(links)} links "
+            "(3·links = 2·pairs fails)",
+            links,
+        )
+    assur_class = classify_group(links, joints)
+    kind = None
+    if len(links) == 2:
+        a, b = links
+        kind = _dyad_kind(external_letter.get(a, "?") + middle_letter + external_letter.get(b, "?"))
+    return AssurGroup(tuple(links), tuple(pairs), assur_class, n_external, kind)
+
+
+_DYAD_KINDS = {"RRR": "RRR", "RRP": "RRP", "PRR": "RRP", "RPR": "RPR", "PRP": "PRP",
+               "RPP": "RPP", "PPR": "RPP"}  # fmt: skip
+
+
+def _dyad_kind(letters: str) -> str:
+    return _DYAD_KINDS.get(letters, letters)
+
+
+def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
+    """Class of a group from its internal joints (each: the group links it joins).
+
+    >>> classify_group(["2", "3"], [("2", "3")])
+    2
+    >>> classify_group(["B", "a", "b", "c"], [("B", "a"), ("B", "b"), ("B", "c")])  # triad
+    3
+    >>> classify_group(list("1234"), [("1", "2"), ("2", "3"), ("3", "4"), ("4", "1")])
+    4
+    """
+    degree = dict.fromkeys(links, 0)
+    for j in joints:
+        for x in j:
+            degree[x] += 1
+    most = max(degree.values(), default=0)
+    n_nodes = len(links) + len(joints)
+    n_edges = sum(len(j) for j in joints)
+    # a forest has no contour: skip the cycle search
+    components = _components(links, joints)
+    contour = 0 if n_edges == n_nodes - components else _longest_contour(links, joints)
+    return max(2, most, contour)
+
+
+def _components(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
+    parent = {x: x for x in links}
+
+    def find(x: str) -> str:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    count = len(links) + len(joints)
+    for j in joints:
+        count -= 1  # the joint node merges with its first link
+        for x in j[1:]:
+            ra, rb = find(j[0]), find(x)
+            if ra != rb:
+                parent[ra] = rb
+                count -= 1
+    return count
+
+
+def _longest_contour(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
+    """Most joints on a simple cycle of the bipartite graph links ↔ joints (backtracking)."""
+    joints_of: dict[str, list[int]] = {x: [] for x in links}
+    for k, j in enumerate(joints):
+        for x in j:
+            joints_of[x].append(k)
+    rank = {x: i for i, x in enumerate(links)}
+    best = 0
+
+    def extend(start: str, link: str, used_links: set[str], used_joints: set[int]) -> None:
+        nonlocal best
+        for k in joints_of[link]:
+            if k in used_joints:
+                continue
+            used_joints.add(k)
+            for nxt in joints[k]:
+                if nxt == link:
+                    continue
+                if nxt == start:
+                    best = max(best, len(used_joints))
+                elif nxt not in used_links and rank[nxt] > rank[start]:
+                    used_links.add(nxt)
+                    extend(start, nxt, used_links, used_joints)
+                    used_links.discard(nxt)
+            used_joints.discard(k)
+
+    for start in links:  # cycles whose first link (in group order) is `start`
+        extend(start, start, {start}, set())
+    return best

@@ -1,0 +1,86 @@
+"""The ``assur`` command line: the edge of the project, where argv is parsed and text printed.
+
+Exit codes: 0 success, 1 a mechanism error (bad file, impossible mechanism),
+2 a usage error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Sequence
+
+from .edgelist import read_edgelist
+from .errors import MechanismError, MobilityError
+from .report import (
+    all_driver_choices,
+    analyze,
+    format_mobility_error,
+    format_report,
+    mobility_error_dict,
+    report_to_dict,
+)
+
+__all__ = ["main"]
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="assur",
+        description="Structural analysis of planar mechanisms by Assur groups.",
+    )
+    sub = parser.add_subparsers(dest="command", required=True)
+    classify = sub.add_parser(
+        "classify",
+        help="mobility, higher-pair replacement, Assur groups, class and structural formula",
+    )
+    classify.add_argument("file", help="edge-list file (.edges) or its JSON form (.json)")
+    classify.add_argument(
+        "--driver", action="append", metavar="L", help="driving link (repeat for several)"
+    )
+    classify.add_argument(
+        "--all-drivers", action="store_true", help="list the groups for every admissible driver choice"
+    )
+    classify.add_argument("--json", action="store_true", help="print one JSON object")
+    return parser
+
+
+def _classify(args: argparse.Namespace) -> int:
+    try:
+        mechanism = read_edgelist(args.file)
+        report = analyze(mechanism, args.driver)
+        choices = all_driver_choices(report) if args.all_drivers else ()
+    except MobilityError as exc:
+        if args.json:
+            print(json.dumps(mobility_error_dict(exc), indent=2, ensure_ascii=False))
+        else:
+            sys.stderr.write(format_mobility_error(exc))
+        return 1
+    except MechanismError as exc:
+        if args.json:
+            print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
+        sys.stderr.write(f"error: {exc}\n")
+        return 1
+    if args.json:
+        print(json.dumps(report_to_dict(report, choices), indent=2, ensure_ascii=False))
+    else:
+        sys.stdout.write(format_report(report, choices))
+    return 0
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the exit code."""
+    parser = _parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help
+        return int(exc.code or 0)
+    if args.command == "classify":
+        return _classify(args)
+    parser.error(f"unknown command {args.command}")
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,436 @@
+"""The structural constraint system of a mechanism: unknowns, rows, Jacobians.
+
+Unknowns come in blocks: the position (x, y) and the angle θ of each moving
+link, and the position of each compound hinge's pin (a point shared by three
+or more links; two-link hinges are eliminated, which changes no block
+structure). Rows come from pairs and drivers:
+
+===========================  ======  ==========================================
+source                       size    unknowns touched
+===========================  ======  ==========================================
+two-link hinge (R pair)      2       pos, θ of both links
+link at a compound pin       2       pos, θ of the link, the pin (if not ground)
+P pair, angle row            1       θ of both links
+P pair, slide row            1       pos, θ of both links
+H pair (contact normal)      1       pos, θ of both links
+driver on an R pair          1       θ of the driver
+driver on a P pair           1       pos of the driver
+===========================  ======  ==========================================
+
+The ground has no unknowns. :func:`jacobian` evaluates the rows at a
+realization: :func:`random_realization` gives a generic one (any placement is
+a valid pose of *some* mechanism with this topology, so its rank is the
+generic rank with probability 1), :func:`sketch_realization` the file's pose.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from enum import Enum
+
+import numpy as np
+
+from .errors import EdgeListError, EdgeListProblem
+from .model import Mechanism, PairKind
+
+__all__ = [
+    "ConstraintSystem",
+    "Realization",
+    "RowKind",
+    "Unknown",
+    "constraint_system",
+    "MissingGeometry",
+    "jacobian",
+    "row_entries",
+    "random_realization",
+    "sketch_realization",
+]
+
+
+class RowKind(Enum):
+    HINGE = "hinge"  # two-link hinge, 2 rows
+    PIN = "pin"  # one link at a compound pin, 2 rows
+    SLIDE_ANGLE = "slide angle"
+    SLIDE = "slide"
+    CONTACT = "contact"
+    DRIVER = "driver"
+    PROBE = "probe"  # a coordinate fixed to expose free motion
+
+
+@dataclass(frozen=True, slots=True)
+class Unknown:
+    """A block of unknowns: ``kind`` is ``'pos'`` (2), ``'ang'`` (1) or ``'pin'`` (2)."""
+
+    kind: str
+    owner: str  # link name, or hinge point for a pin
+    size: int
+
+
+@dataclass(frozen=True, slots=True)
+class ConstraintSystem:
+    """Rows and unknowns of a mechanism's constraint equations, as index lists.
+
+    ``row_adj[r]`` lists the unknown blocks row block ``r`` touches, in the
+    order the matching should try them; ``row_size[r]`` its number of scalar
+    rows; ``row_pair[r]`` the pair id it comes from (0 for drivers);
+    ``row_link[r]`` the link it belongs to (pin rows, drivers) or ``""``.
+    """
+
+    mechanism: Mechanism
+    unknowns: tuple[Unknown, ...]
+    row_kind: tuple[RowKind, ...]
+    row_size: tuple[int, ...]
+    row_adj: tuple[tuple[int, ...], ...]
+    row_pair: tuple[int, ...]
+    row_link: tuple[str, ...]
+    pos: dict[str, int]
+    ang: dict[str, int]
+    pin: dict[str, int]
+    n_pair_rows: int
+
+    @property
+    def n_scalar_unknowns(self) -> int:
+        return sum(u.size for u in self.unknowns)
+
+    def scalar_offsets(self) -> tuple[np.ndarray, np.ndarray]:
+        """Offsets of each unknown block and each row block in scalar numbering."""
+        uo = np.concatenate([[0], np.cumsum([u.size for u in self.unknowns])]).astype(int)
+        ro = np.concatenate([[0], np.cumsum(self.row_size)]).astype(int)
+        return uo, ro
+
+    def with_rows(
+        self,
+        kinds: Sequence[RowKind],
+        sizes: Sequence[int],
+        adjs: Sequence[tuple[int, ...]],
+        links: Sequence[str],
+    ) -> ConstraintSystem:
+        """The same system with extra (driver or probe) rows appended."""
+        return ConstraintSystem(
+            self.mechanism,
+            self.unknowns,
+            self.row_kind + tuple(kinds),
+            self.row_size + tuple(sizes),
+            self.row_adj + tuple(adjs),
+            self.row_pair + (0,) * len(kinds),
+            self.row_link + tuple(links),
+            self.pos,
+            self.ang,
+            self.pin,
+            self.n_pair_rows,
+        )
+
+
+def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> ConstraintSystem:
+    """Build the constraint system of ``mechanism`` with driver rows for ``drivers``.
+
+    >>> from structure.model import Mechanism
+    >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "3", "R"),
+    ...                           ("3", "0", "R")])
+    >>> s = constraint_system(m, ["1"])
+    >>> s.n_scalar_unknowns, sum(s.row_size)
+    (9, 9)
+    """
+    ground = mechanism.ground
+    unknowns: list[Unknown] = []
+    pos: dict[str, int] = {}
+    ang: dict[str, int] = {}
+    pin: dict[str, int] = {}
+    for link in mechanism.moving_links:
+        pos[link] = len(unknowns)
+        unknowns.append(Unknown("pos", link, 2))
+        ang[link] = len(unknowns)
+        unknowns.append(Unknown("ang", link, 1))
+
+    kinds: list[RowKind] = []
+    sizes: list[int] = []
+    adjs: list[tuple[int, ...]] = []
+    pair_of: list[int] = []
+    link_of: list[str] = []
+
+    def add(kind: RowKind, size: int, adj: tuple[int, ...], pair_id: int, link: str = "") -> None:
+        kinds.append(kind)
+        sizes.append(size)
+        adjs.append(adj)
+        pair_of.append(pair_id)
+        link_of.append(link)
+
+    def body(link: str) -> tuple[int, ...]:
+        return () if link == ground else (pos[link], ang[link])
+
+    compound = {h.point: h for h in mechanism.hinges if len(h.links) > 2}
+    done_points: set[str] = set()
+    for p in mechanism.pairs:
+        if p.kind is PairKind.R:
+            h = compound.get(p.point) if p.point is not None else None
+            if h is None:
+                add(RowKind.HINGE, 2, body(p.b) + body(p.a), p.id)
+                continue
+            if h.point in done_points:
+                continue
+            done_points.add(h.point)
+            first_pair = {}
+            for pid in h.pairs:
+                for link in mechanism.pair(pid).links:
+                    first_pair.setdefault(link, pid)
+            if ground in h.links:
+                for link in h.links:
+                    if link != ground:
+                        add(RowKind.PIN, 2, body(link), first_pair[link], link)
+            else:
+                pin[h.point] = len(unknowns)
+                unknowns.append(Unknown("pin", h.point, 2))
+                for link in h.links:
+                    add(RowKind.PIN, 2, (pin[h.point], *body(link)), first_pair[link], link)
+        elif p.kind is PairKind.P:
+            angles = tuple(ang[x] for x in (p.b, p.a) if x != ground)
+            add(RowKind.SLIDE_ANGLE, 1, angles, p.id)
+            add(RowKind.SLIDE, 1, body(p.b) + body(p.a), p.id)
+        else:
+            add(RowKind.CONTACT, 1, body(p.b) + body(p.a), p.id)
+    n_pair_rows = len(kinds)
+    system = ConstraintSystem(
+        mechanism,
+        tuple(unknowns),
+        tuple(kinds),
+        tuple(sizes),
+        tuple(adjs),
+        tuple(pair_of),
+        tuple(link_of),
+        pos,
+        ang,
+        pin,
+        n_pair_rows,
+    )
+    if not drivers:
+        return system
+    return system.with_rows(*zip(*(_driver_row(system, d) for d in drivers), strict=True))
+
+
+def _driver_row(system: ConstraintSystem, link: str) -> tuple[RowKind, int, tuple[int, ...], str]:
+    m = system.mechanism
+    kinds = {p.kind for p in m.pairs_of(link) if p.other(link) == m.ground}
+    if PairKind.R in kinds:
+        return RowKind.DRIVER, 1, (system.ang[link],), link
+    if PairKind.P in kinds:
+        return RowKind.DRIVER, 1, (system.pos[link],), link
+    raise EdgeListError(
+        m.source,
+        [EdgeListProblem(0, "", f"driver {link} is not joined to the ground by an R or P pair")],
+    )
+
+
+# --------------------------------------------------------------------------- numbers
+@dataclass(frozen=True, slots=True)
+class Realization:
+    """Numbers that place a constraint system: one entry per row block.
+
+    ``origin[link]`` is the link's reference point, ``point[r]`` the location
+    of row block ``r`` (pin or contact), ``direction[r]`` the unit slide
+    direction of a P row, the contact normal of an H row or the slide of a
+    P driver.
+    """
+
+    origin: dict[str, np.ndarray]
+    point: tuple[np.ndarray | None, ...]
+    direction: tuple[np.ndarray | None, ...]
+
+
+def random_realization(system: ConstraintSystem, seed: int = 20261121) -> Realization:
+    """A generic placement: random link origins, pin points and directions."""
+    rng = np.random.default_rng(seed)
+    m = system.mechanism
+    origin = {link: rng.uniform(-1, 1, 2) for link in m.links}
+    origin[m.ground] = np.zeros(2)
+    pin_xy = {name: rng.uniform(-1, 1, 2) for name in system.pin}
+    points: list[np.ndarray | None] = []
+    dirs: list[np.ndarray | None] = []
+    for r, kind in enumerate(system.row_kind):
+        if kind is RowKind.PIN:
+            pair = m.pair(system.row_pair[r])
+            points.append(pin_xy.get(pair.point, None))
+            if points[-1] is None:  # pin on the ground: one fixed point per hinge
+                pin_xy[pair.point] = rng.uniform(-1, 1, 2)
+                points[-1] = pin_xy[pair.point]
+        else:
+            points.append(rng.uniform(-1, 1, 2))
+        t = rng.uniform(0, 2 * math.pi)
+        dirs.append(np.array([math.cos(t), math.sin(t)]))
+    # the two rows of a P pair share one contact point and direction
+    for r, kind in enumerate(system.row_kind):
+        if kind is RowKind.SLIDE:
+            points[r], dirs[r] = points[r - 1], dirs[r - 1]
+    return Realization(origin, tuple(points), tuple(dirs))
+
+
+class MissingGeometry(Exception):
+    """Raised by :func:`sketch_realization` with the reasons the sketch is incomplete."""
+
+    def __init__(self, reasons: Sequence[str]):
+        self.reasons = tuple(reasons)
+        super().__init__("; ".join(self.reasons))
+
+
+def _contact_normal(mechanism: Mechanism, pair_id: int) -> np.ndarray | None:
+    p = mechanism.pair(pair_id)
+    if p.normal is not None:
+        return np.array([math.cos(p.normal), math.sin(p.normal)])
+    xy = mechanism.coordinates
+    if p.centers is None:
+        return None
+    ca, cb = (None if c is None else xy(c) for c in p.centers)
+    k = xy(p.point) if p.point else None
+    if ca is not None and cb is not None:
+        v = np.subtract(cb, ca)
+    elif ca is not None and k is not None:
+        v = np.subtract(k, ca)
+    elif cb is not None and k is not None:
+        v = np.subtract(k, cb)
+    else:
+        return None
+    norm = float(np.hypot(*v))
+    return None if norm == 0 else v / norm
+
+
+def sketch_realization(system: ConstraintSystem) -> Realization:
+    """The realization given by the file's ``point`` coordinates.
+
+    Every link's reference point is the origin (any choice gives the same
+    rank). Raises :class:`MissingGeometry` naming what is missing.
+    """
+    m = system.mechanism
+    missing: list[str] = []
+    points: list[np.ndarray | None] = []
+    dirs: list[np.ndarray | None] = []
+    for r, kind in enumerate(system.row_kind):
+        point = direction = None
+        if kind in (RowKind.DRIVER, RowKind.PROBE):
+            link = system.row_link[r]
+            for p in m.pairs_of(link):
+                if p.other(link) == m.ground and p.kind is PairKind.P and p.angle is not None:
+                    direction = np.array([math.cos(p.angle), math.sin(p.angle)])
+            points.append(None)
+            dirs.append(direction)
+            continue
+        pair = m.pair(system.row_pair[r])
+        if pair.point is None:
+            missing.append(f"pair {pair.label} (line {pair.line_no}) names no point")
+        elif m.coordinates(pair.point) is None:
+            missing.append(f"point {pair.point} (pair {pair.label}, line {pair.line_no}) has no coordinates")
+        else:
+            point = np.array(m.coordinates(pair.point), dtype=float)
+        if kind in (RowKind.SLIDE, RowKind.SLIDE_ANGLE):
+            if pair.angle is None:
+                if kind is RowKind.SLIDE:
+                    missing.append(f"P pair {pair.label} (line {pair.line_no}) has no angle=")
+            else:
+                direction = np.array([math.cos(pair.angle), math.sin(pair.angle)])
+        elif kind is RowKind.CONTACT:
+            direction = _contact_normal(m, pair.id)
+            if direction is None:
+                missing.append(
+                    f"H pair {pair.label} (line {pair.line_no}) needs centers= with coordinates "
+                    "or normal= to fix its contact normal"
+                )
+        points.append(point)
+        dirs.append(direction)
+    if missing:
+        raise MissingGeometry(missing)
+    origin = {link: np.zeros(2) for link in m.links}
+    return Realization(origin, tuple(points), tuple(dirs))
+
+
+def _perp(v: np.ndarray) -> np.ndarray:
+    return np.array([-v[1], v[0]])
+
+
+def row_entries(
+    system: ConstraintSystem, realization: Realization, r: int, uo: np.ndarray
+) -> list[tuple[int, int, float]]:
+    """Nonzeros ``(local_row, scalar_column, value)`` of row block ``r``.
+
+    ``uo`` holds the scalar offset of each unknown block (from
+    :meth:`ConstraintSystem.scalar_offsets`).
+    """
+    m = system.mechanism
+    kind = system.row_kind[r]
+    out: list[tuple[int, int, float]] = []
+    c = realization.point[r]
+    d = realization.direction[r]
+
+    def lever(link: str) -> np.ndarray:
+        return _perp(c - realization.origin[link])
+
+    if kind is RowKind.PROBE:
+        u = system.row_adj[r][0]
+        # a probe fixes one generic combination of the block's coordinates
+        for k in range(system.unknowns[u].size):
+            out.append((0, uo[u] + k, 1.0 + 0.37 * k))
+        return out
+    if kind is RowKind.DRIVER:
+        u = system.row_adj[r][0]
+        if system.unknowns[u].kind == "ang":
+            out.append((0, uo[u], 1.0))
+        else:
+            dd = d if d is not None else np.array([1.0, 0.0])
+            out.extend([(0, uo[u], float(dd[0])), (0, uo[u] + 1, float(dd[1]))])
+        return out
+    pair = m.pair(system.row_pair[r])
+    if kind is RowKind.SLIDE_ANGLE:
+        for link, sign in ((pair.a, 1.0), (pair.b, -1.0)):
+            if link != m.ground:
+                out.append((0, uo[system.ang[link]], sign))
+        return out
+    if kind in (RowKind.SLIDE, RowKind.CONTACT):
+        n = _perp(d) if kind is RowKind.SLIDE else d
+        for link, sign in ((pair.a, -1.0), (pair.b, 1.0)):
+            if link == m.ground:
+                continue
+            p0 = uo[system.pos[link]]
+            out.extend([(0, p0, sign * n[0]), (0, p0 + 1, sign * n[1])])
+            out.append((0, uo[system.ang[link]], sign * float(n @ lever(link))))
+        return out
+    if kind is RowKind.HINGE:
+        for link, sign in ((pair.a, 1.0), (pair.b, -1.0)):
+            if link == m.ground:
+                continue
+            p0 = uo[system.pos[link]]
+            a0 = uo[system.ang[link]]
+            lv = lever(link)
+            out.extend([(0, p0, sign), (1, p0 + 1, sign), (0, a0, sign * lv[0]), (1, a0, sign * lv[1])])
+        return out
+    # PIN: link position + rotated offset - pin = 0
+    link = system.row_link[r]
+    p0 = uo[system.pos[link]]
+    a0 = uo[system.ang[link]]
+    lv = lever(link)
+    out.extend([(0, p0, 1.0), (1, p0 + 1, 1.0), (0, a0, lv[0]), (1, a0, lv[1])])
+    pin = system.pin.get(pair.point)
+    if pin is not None:
+        out.extend([(0, uo[pin], -1.0), (1, uo[pin] + 1, -1.0)])
+    return out
+
+
+def jacobian(
+    system: ConstraintSystem, realization: Realization, rows: Sequence[int] | None = None
+) -> np.ndarray:
+    """Dense Jacobian of the row blocks ``rows`` (default all), scalar columns.
+
+    >>> from structure.model import Mechanism
+    >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "0", "R")])
+    >>> s = constraint_system(m)
+    >>> J = jacobian(s, random_realization(s))
+    >>> J.shape, int(np.linalg.matrix_rank(J))
+    ((6, 6), 6)
+    """
+    uo, _ = system.scalar_offsets()
+    rows = range(len(system.row_kind)) if rows is None else rows
+    rows = list(rows)
+    starts = np.cumsum([0] + [system.row_size[r] for r in rows])
+    J = np.zeros((int(starts[-1]), int(uo[-1])))
+    for i, r in enumerate(rows):
+        for lr, col, value in row_entries(system, realization, r, uo):
+            J[starts[i] + lr, col] = value
+    return J

@@ -1,0 +1,210 @@
+"""Maximum matching and block-triangular (Dulmage–Mendelsohn) order of a constraint system.
+
+Rows and unknowns come in blocks of 1 or 2 scalars, so the matching is a
+b-matching: row block ``r`` needs ``size[r]`` units, unknown block ``u`` offers
+``cap[u]``. Rows are matched in the order given (Kuhn's augmenting paths,
+visiting each unknown block at most once per search), so a row that stays
+unmatched is one whose constraints are already implied structurally by the
+rows before it: the redundant one is always the latest listed.
+
+Once every row is matched, the unknowns form a digraph (``w -> u`` when a row
+matched to ``u`` also touches ``w``); its strongly connected components in
+topological order are the irreducible blocks, in an order in which they can be
+solved one after another. They do not depend on which maximum matching was
+found.
+
+References: A. L. Dulmage, N. S. Mendelsohn, "Coverings of bipartite graphs",
+Canad. J. Math. 10 (1958); R. Tarjan, "Depth-first search and linear graph
+algorithms", SIAM J. Comput. 1 (1972).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+__all__ = ["Matcher", "irreducible_blocks"]
+
+
+class Matcher:
+    """Incremental maximum b-matching of row blocks to unknown blocks.
+
+    >>> m = Matcher([2, 1])              # unknown capacities
+    >>> m.add_row((0, 1), 2), m.add_row((0,), 1), m.add_row((1,), 1)
+    (2, 1, 0)
+    >>> sorted(m.assigned[0] + m.assigned[1])
+    [0, 0, 1]
+    """
+
+    def __init__(self, capacities: Sequence[int]):
+        self.cap = list(capacities)
+        self.load = [0] * len(self.cap)
+        self.owners: list[list[int]] = [[] for _ in self.cap]
+        self.adj: list[tuple[int, ...]] = []
+        self.assigned: list[list[int]] = []
+        self._useen = [0] * len(self.cap)
+        self._rseen: list[int] = []
+        self._stamp = 0
+
+    def add_row(self, adj: tuple[int, ...], size: int) -> int:
+        """Add a row block and match as many of its ``size`` units as possible.
+
+        Returns the number of units matched; the others stay unmatched for good.
+        """
+        r = len(self.adj)
+        self.adj.append(adj)
+        self.assigned.append([])
+        self._rseen.append(0)
+        got = 0
+        for _ in range(size):
+            for u in adj:  # cheap first try: a free unit next door
+                if self.load[u] < self.cap[u]:
+                    self._take(r, u)
+                    got += 1
+                    break
+            else:
+                if not self._augment(r):
+                    break
+                got += 1
+        return got
+
+    def remove_row(self, r: int) -> None:
+        """Unmatch row block ``r`` (it keeps its index but touches nothing)."""
+        for u in self.assigned[r]:
+            self.owners[u].remove(r)
+            self.load[u] -= 1
+        self.assigned[r] = []
+        self.adj[r] = ()
+
+    def _take(self, r: int, u: int) -> None:
+        self.load[u] += 1
+        self.owners[u].append(r)
+        self.assigned[r].append(u)
+
+    def _augment(self, r0: int) -> bool:
+        self._stamp += 1
+        stamp = self._stamp
+        useen, rseen, adj, owners, load, cap = (
+            self._useen,
+            self._rseen,
+            self.adj,
+            self.owners,
+            self.load,
+            self.cap,
+        )
+        rseen[r0] = stamp
+        # stack frames: [is_row, node, next index]
+        stack: list[list[int]] = [[1, r0, 0]]
+        while stack:
+            frame = stack[-1]
+            if frame[0]:
+                r = frame[1]
+                a = adj[r]
+                if frame[2] >= len(a):
+                    stack.pop()
+                    continue
+                u = a[frame[2]]
+                frame[2] += 1
+                if useen[u] == stamp:
+                    continue
+                useen[u] = stamp
+                if load[u] < cap[u]:
+                    self._shift(stack, u)
+                    return True
+                stack.append([0, u, 0])
+            else:
+                u = frame[1]
+                own = owners[u]
+                if frame[2] >= len(own):
+                    stack.pop()
+                    continue
+                r = own[frame[2]]
+                frame[2] += 1
+                if rseen[r] == stamp:
+                    continue
+                rseen[r] = stamp
+                stack.append([1, r, 0])
+        return False
+
+    def _shift(self, stack: list[list[int]], free_u: int) -> None:
+        # stack: r0, u1, r1, u2, r2, ..., uk, rk ; rk takes free_u, r_{j-1} takes u_j from r_j
+        rows = [f[1] for f in stack if f[0]]
+        units = [f[1] for f in stack if not f[0]]
+        self._take(rows[-1], free_u)
+        for j in range(len(units) - 1, -1, -1):
+            u, giver, taker = units[j], rows[j + 1], rows[j]
+            self.owners[u].remove(giver)
+            self.assigned[giver].remove(u)
+            self.owners[u].append(taker)
+            self.assigned[taker].append(u)
+
+    @property
+    def free_units(self) -> list[tuple[int, int]]:
+        """``(unknown block, free units)`` for every block not fully matched."""
+        return [(u, c - l) for u, (c, l) in enumerate(zip(self.cap, self.load, strict=True)) if l < c]
+
+
+def irreducible_blocks(
+    adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]], n_unknowns: int
+) -> list[list[int]]:
+    """Strongly connected components of the matched dependency digraph, sources first.
+
+    ``adj[r]`` are the unknowns row ``r`` touches, ``assigned[r]`` those it is
+    matched to. Each block is a sorted list of unknown indices; blocks come in
+    a topological order (every block after the blocks it depends on), ties
+    broken by the smallest unknown index, so the order is deterministic.
+    """
+    succ: list[list[int]] = [[] for _ in range(n_unknowns)]
+    for r, units in enumerate(assigned):
+        if not units:
+            continue
+        targets = set(units)
+        for w in adj[r]:
+            for u in targets:
+                if w != u:
+                    succ[w].append(u)
+    # iterative Tarjan; components come out sinks first
+    index = [-1] * n_unknowns
+    low = [0] * n_unknowns
+    on_stack = [False] * n_unknowns
+    stack: list[int] = []
+    comps: list[list[int]] = []
+    counter = 0
+    for root in range(n_unknowns):
+        if index[root] != -1:
+            continue
+        work = [(root, 0)]
+        index[root] = low[root] = counter
+        counter += 1
+        stack.append(root)
+        on_stack[root] = True
+        while work:
+            v, i = work[-1]
+            s = succ[v]
+            if i < len(s):
+                work[-1] = (v, i + 1)
+                w = s[i]
+                if index[w] == -1:
+                    index[w] = low[w] = counter
+                    counter += 1
+                    stack.append(w)
+                    on_stack[w] = True
+                    work.append((w, 0))
+                elif on_stack[w] and index[w] < low[v]:
+                    low[v] = index[w]
+                continue
+            work.pop()
+            if work:
+                parent = work[-1][0]
+                if low[v] < low[parent]:
+                    low[parent] = low[v]
+            if low[v] == index[v]:
+                comp = []
+                while True:
+                    w = stack.pop()
+                    on_stack[w] = False
+                    comp.append(w)
+                    if w == v:
+                        break
+                comps.append(sorted(comp))
+    comps.reverse()
+    return comps

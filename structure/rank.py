@@ -1,0 +1,264 @@
+"""Rank of a constraint system: which constraints are redundant, how much freedom is left.
+
+Two questions, one engine:
+
+* **generic** (topology only): rows are matched to unknowns in file order
+  (:class:`~structure.dulmage_mendelsohn.Matcher`); a row left unmatched is
+  structurally redundant. Free unknowns get probe rows, which makes the system
+  square; it is then split into irreducible blocks and every block's
+  determinant is checked at a random realization. When all blocks are regular
+  the matching *is* the generic rank (block-triangular with regular diagonal
+  blocks). A singular block means a hidden dependency (a floating
+  over-constrained subassembly, a loop of prismatic pairs); then a dense
+  rank-revealing pass at the random realization names it.
+* **geometric** (the sketch pose): the same dense pass at the file's
+  coordinates finds redundancy that only the dimensions create (a
+  parallelogram with a third parallel crank).
+
+The dense pass keeps rows greedily in order (pairs in file order, then
+drivers), so the constraint reported as redundant is the latest listed one of
+its dependent set.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .constraints import (
+    ConstraintSystem,
+    Realization,
+    RowKind,
+    jacobian,
+    random_realization,
+    row_entries,
+)
+from .dulmage_mendelsohn import Matcher, irreducible_blocks
+from .errors import MechanismError
+
+__all__ = ["DENSE_LIMIT", "RankAnalysis", "generic_rank", "geometric_rank", "null_space"]
+
+#: largest number of scalar unknowns for the dense (rank-revealing) pass
+DENSE_LIMIT = 6000
+_RANK_TOL = 1e-8
+
+
+@dataclass(frozen=True)
+class RankAnalysis:
+    """What the rank of a (driven) constraint system says.
+
+    Attributes
+    ----------
+    system : ConstraintSystem
+        The system analysed, pair rows then driver rows.
+    dependent : dict
+        Row block -> number of its scalar rows that depend on earlier rows.
+    rank : int
+        Rank of the pair rows alone.
+    dof : int
+        Scalar unknowns minus ``rank``: the mobility before passive motions.
+    free : list of (int, int)
+        Unknown blocks (and units) that the pairs and drivers leave free.
+    blocks : list of list of int or None
+        Irreducible blocks of the driven system in solve order, when it is
+        square and regular (the usual case); ``None`` otherwise.
+    assigned : list of list of int
+        The matching behind ``blocks``.
+    method : str
+        ``'structural'`` (matching + block determinants) or ``'dense'``.
+    """
+
+    system: ConstraintSystem
+    dependent: dict[int, int]
+    rank: int
+    dof: int
+    free: list[tuple[int, int]]
+    blocks: list[list[int]] | None
+    assigned: list[list[int]] = field(repr=False)
+    method: str
+
+    @property
+    def dependent_pairs(self) -> dict[int, int]:
+        """Pair id -> number of its scalar constraints that are redundant."""
+        out: dict[int, int] = {}
+        for r, k in self.dependent.items():
+            if r < self.system.n_pair_rows:
+                pid = self.system.row_pair[r]
+                out[pid] = out.get(pid, 0) + k
+        return out
+
+    @property
+    def dependent_drivers(self) -> list[str]:
+        return [
+            self.system.row_link[r] for r in self.dependent if r >= self.system.n_pair_rows
+        ]
+
+
+def _match(system: ConstraintSystem) -> tuple[Matcher, dict[int, int]]:
+    matcher = Matcher([u.size for u in system.unknowns])
+    unmatched: dict[int, int] = {}
+    for r, (adj, size) in enumerate(zip(system.row_adj, system.row_size, strict=True)):
+        got = matcher.add_row(adj, size)
+        if got < size:
+            unmatched[r] = size - got
+    return matcher, unmatched
+
+
+def _probe_system(system: ConstraintSystem, free: list[tuple[int, int]]) -> ConstraintSystem:
+    return system.with_rows(
+        [RowKind.PROBE] * len(free), [k for _, k in free], [(u,) for u, _ in free], [""] * len(free)
+    )
+
+
+def _blocks_regular(
+    system: ConstraintSystem,
+    blocks: list[list[int]],
+    assigned: list[list[int]],
+    realization: Realization,
+) -> bool:
+    """True when every irreducible block's square Jacobian is numerically regular."""
+    uo, _ = system.scalar_offsets()
+    block_of = np.empty(len(system.unknowns), dtype=int)
+    for b, units in enumerate(blocks):
+        block_of[units] = b
+    rows_of: list[list[int]] = [[] for _ in blocks]
+    for r, units in enumerate(assigned):
+        if units:
+            rows_of[block_of[units[0]]].append(r)
+    for b, units in enumerate(blocks):
+        if len(units) == 1 and len(rows_of[b]) == 1 and system.row_kind[rows_of[b][0]] in (
+            RowKind.DRIVER,
+            RowKind.PROBE,
+        ):
+            continue  # a single driver/probe row on one block is regular by construction
+        cols: dict[int, int] = {}
+        for u in units:
+            for k in range(system.unknowns[u].size):
+                cols[int(uo[u]) + k] = len(cols)
+        size = len(cols)
+        a = np.zeros((size, size))
+        i = 0
+        for r in rows_of[b]:
+            for lr, col, value in row_entries(system, realization, r, uo):
+                j = cols.get(col)
+                if j is not None:
+                    a[i + lr, j] = value
+            i += system.row_size[r]
+        if i != size:
+            return False
+        s = np.linalg.svd(a, compute_uv=False)
+        if s[-1] <= _RANK_TOL * max(1.0, s[0]):
+            return False
+    return True
+
+
+def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis:
+    """Generic rank analysis of ``system`` (pair rows, then driver rows).
+
+    >>> from structure.model import Mechanism
+    >>> from structure.constraints import constraint_system
+    >>> m = Mechanism.from_pairs([("0", "1", "R", "O"), ("1", "2", "R", "p"),
+    ...                           ("1", "2", "R", "q")])          # a double pin
+    >>> g = generic_rank(constraint_system(m, ["1"]))
+    >>> g.dof, g.dependent_pairs
+    (1, {3: 1})
+    """
+    matcher, unmatched = _match(system)
+    free = matcher.free_units
+    probed = _probe_system(system, free)
+    assigned = [list(a) for a in matcher.assigned]
+    for u, k in free:
+        assigned.append([u] * k)
+    blocks = irreducible_blocks(probed.row_adj, assigned, len(system.unknowns))
+    realization = random_realization(probed, seed)
+    if _blocks_regular(probed, blocks, assigned, realization):
+        n_pairs = system.n_pair_rows
+        rank = sum(len(a) for a in matcher.assigned[:n_pairs])
+        return RankAnalysis(
+            system,
+            unmatched,
+            rank,
+            system.n_scalar_unknowns - rank,
+            free,
+            None if free or unmatched else blocks,
+            assigned,
+            "structural",
+        )
+    return dense_rank(system, random_realization(system, seed), method="dense")
+
+
+def geometric_rank(system: ConstraintSystem, realization: Realization) -> RankAnalysis:
+    """Rank analysis at the sketch pose (dense; see :func:`dense_rank`)."""
+    return dense_rank(system, realization, method="dense")
+
+
+def _scale(system: ConstraintSystem, realization: Realization) -> float:
+    pts = [p for p in realization.point if p is not None]
+    if not pts:
+        return 1.0
+    arr = np.array(pts)
+    span = float(np.max(np.ptp(arr, axis=0))) if len(arr) > 1 else 0.0
+    return span if span > 0 else max(1.0, float(np.max(np.abs(arr))))
+
+
+def dense_rank(system: ConstraintSystem, realization: Realization, method: str) -> RankAnalysis:
+    """Rank-revealing pass over the rows in order at ``realization``.
+
+    Lengths are made dimensionless by the sketch's size, then each scalar row
+    is kept when its component orthogonal to the rows kept so far exceeds
+    1e-8 of its norm.
+    """
+    n = system.n_scalar_unknowns
+    if n > DENSE_LIMIT:
+        raise MechanismError(
+            f"the mechanism has {n} scalar unknowns and a dependency the block analysis "
+            f"cannot resolve; the dense rank pass is limited to {DENSE_LIMIT}"
+        )
+    J = jacobian(system, realization)
+    uo, ro = system.scalar_offsets()
+    length = _scale(system, realization)
+    for u, unk in enumerate(system.unknowns):
+        if unk.kind == "ang":
+            J[:, uo[u]] /= length
+    basis = np.zeros((0, n))
+    kept: list[int] = []
+    dependent: dict[int, int] = {}
+    for r in range(len(system.row_kind)):
+        for i in range(int(ro[r]), int(ro[r + 1])):
+            v = J[i]
+            norm = float(np.linalg.norm(v))
+            if norm == 0.0:
+                dependent[r] = dependent.get(r, 0) + 1
+                continue
+            w = v - basis.T @ (basis @ v)
+            w = w - basis.T @ (basis @ w)
+            wn = float(np.linalg.norm(w))
+            if wn <= _RANK_TOL * norm:
+                dependent[r] = dependent.get(r, 0) + 1
+            else:
+                basis = np.vstack([basis, w / wn])
+                kept.append(i)
+    n_pair_scalar = int(ro[system.n_pair_rows])
+    rank = sum(1 for i in kept if i < n_pair_scalar)
+    free = [] if len(kept) == n else [(-1, n - len(kept))]
+    return RankAnalysis(system, dependent, rank, n - rank, free, None, [], method)
+
+
+def null_space(
+    system: ConstraintSystem, realization: Realization, rows: Sequence[int] | None = None
+) -> np.ndarray:
+    """Orthonormal basis (columns) of the null space of the given rows at ``realization``."""
+    J = jacobian(system, realization, rows)
+    n = system.n_scalar_unknowns
+    if J.shape[0] == 0:
+        return np.eye(n)
+    uo, _ = system.scalar_offsets()
+    length = _scale(system, realization)
+    for u, unk in enumerate(system.unknowns):
+        if unk.kind == "ang":
+            J[:, uo[u]] /= length
+    _, s, vt = np.linalg.svd(J)
+    rank = int(np.sum(s > _RANK_TOL * max(1.0, s[0] if len(s) else 1.0)))
+    return vt[rank:].T

@@ -1,0 +1,161 @@
+"""Higher-pair replacement: rollers removed, each higher pair -> virtual link + two lower pairs.
+
+The replacement is instantaneous (valid for positions, velocities and
+accelerations at the pose) and keeps the mobility: a higher pair removes one
+freedom, a virtual link with two lower pairs removes 2·2 − 3 = 1.
+
+* A roller (``roller=L``) is deleted first with its revolute pair to the
+  follower; its spin was a passive freedom. The contact then acts at the
+  roller's axis, a point of the follower.
+* Curve–curve contact: revolute pairs at the two centres of curvature
+  (``centers=O1,O2``), joined by the virtual link.
+* Curve–line contact (``flat=L``): a revolute pair at the curved profile's
+  centre and a prismatic pair on ``L``, parallel to its face.
+
+Virtual links are named ``v1``, ``v2``, … after the higher pairs in file
+order (with primes added if a link already has that name). Lower pairs keep
+their ids; new pairs get ids after the last one.
+
+>>> from structure.edgelist import parse_edgelist
+>>> m = parse_edgelist(["driver 1", "0 1 R O1", "1 2 H K centers=C1,A",
+...                     "2 0 R O2"])
+>>> r, reps = replace_higher_pairs(m)
+>>> [p.label for p in r.pairs]
+['0–1 R O1', '2–0 R O2', '1–v1 R C1', 'v1–2 R A']
+>>> reps[0].virtual_link, reps[0].pair.label
+('v1', '1–2 H K')
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import EdgeListError, EdgeListProblem
+from .model import Mechanism, Pair, PairKind, validated
+
+__all__ = ["Replacement", "RollerRemoval", "replace_higher_pairs"]
+
+
+@dataclass(frozen=True, slots=True)
+class RollerRemoval:
+    """A roller deleted before replacement: its spin is one passive freedom."""
+
+    roller: str
+    follower: str
+    axis: str
+    removed_pairs: tuple[Pair, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Replacement:
+    """Virtual link ``virtual_link`` with ``new_pairs`` stands for higher pair ``pair``."""
+
+    virtual_link: str
+    pair: Pair
+    new_pairs: tuple[Pair, ...]
+    roller: RollerRemoval | None = None
+
+    @property
+    def scheme(self) -> str:
+        """``'R–R'`` or ``'R–P'``: the lower pairs that replaced the contact."""
+        return "–".join(p.kind.value for p in self.new_pairs)
+
+
+def _fresh(name: str, taken: set[str]) -> str:
+    while name in taken:
+        name += "'"
+    taken.add(name)
+    return name
+
+
+def replace_higher_pairs(
+    mechanism: Mechanism,
+) -> tuple[Mechanism, tuple[Replacement, ...]]:
+    """The equivalent lower-pair mechanism and the record of each replacement.
+
+    Raises
+    ------
+    EdgeListError
+        A roller that is a driver, or is not a binary link joined to its
+        follower by one revolute pair.
+    """
+    highs = [p for p in mechanism.pairs if p.kind is PairKind.H]
+    if not highs:
+        return mechanism, ()
+    problems: list[EdgeListProblem] = []
+    taken = set(mechanism.links) | set(mechanism.points)
+    removed_ids: set[int] = set()
+    rollers: dict[int, RollerRemoval] = {}
+    contact: dict[int, tuple[str, str, str | None, str | None]] = {}  # pid -> a, b, center a, center b
+
+    for p in highs:
+        a, b = p.a, p.b
+        ca, cb = p.centers if p.centers is not None else (None, None)
+        if p.roller is not None:
+            roller = p.roller
+            cam = p.other(roller)
+            others = [q for q in mechanism.pairs_of(roller) if q.id != p.id]
+            if roller in mechanism.driver_links:
+                problems.append(EdgeListProblem(p.line_no, p.label, f"roller {roller} is a driver"))
+                continue
+            if len(others) != 1 or others[0].kind is not PairKind.R:
+                problems.append(
+                    EdgeListProblem(
+                        p.line_no,
+                        p.label,
+                        f"roller {roller} must be joined to its follower by exactly one R pair "
+                        f"besides this contact ({len(others)} other pairs found)",
+                    )
+                )
+                continue
+            axis_pair = others[0]
+            follower = axis_pair.other(roller)
+            axis = axis_pair.point or _fresh(f"{roller}.axis", taken)
+            removed_ids.add(axis_pair.id)
+            rollers[p.id] = RollerRemoval(roller, follower, axis, (axis_pair, p))
+            cam_center = p.center_of(cam)
+            a, b = cam, follower
+            ca, cb = cam_center, axis
+        contact[p.id] = (a, b, ca, cb)
+    if problems:
+        raise EdgeListError(mechanism.source, problems)
+
+    kept = [p for p in mechanism.pairs if p.kind is not PairKind.H and p.id not in removed_ids]
+    next_id = max(p.id for p in mechanism.pairs) + 1
+    new_pairs: list[Pair] = []
+    records: list[Replacement] = []
+    for k, p in enumerate(highs, start=1):
+        a, b, ca, cb = contact[p.id]
+        v = _fresh(f"v{k}", taken)
+        flat = p.flat if p.flat in (a, b) else None
+        if flat is None:
+            ca = ca or _fresh(f"{v}.{a}", taken)
+            cb = cb or _fresh(f"{v}.{b}", taken)
+            made = (
+                Pair(next_id, PairKind.R, a, v, ca, line_no=p.line_no),
+                Pair(next_id + 1, PairKind.R, v, b, cb, line_no=p.line_no),
+            )
+        else:
+            curved = b if flat == a else a
+            center = (cb if flat == a else ca) or _fresh(f"{v}.{curved}", taken)
+            angle = _face_angle(mechanism, p, center)
+            r_pair = Pair(next_id, PairKind.R, curved, v, center, line_no=p.line_no)
+            p_pair = Pair(next_id + 1, PairKind.P, v, flat, center, angle_deg=angle, line_no=p.line_no)
+            made = (r_pair, p_pair)
+        next_id += 2
+        new_pairs.extend(made)
+        records.append(Replacement(v, p, made, rollers.get(p.id)))
+    replaced = mechanism.evolve(pairs=tuple(kept + new_pairs))
+    return validated(replaced), tuple(records)
+
+
+def _face_angle(mechanism: Mechanism, pair: Pair, center: str) -> float | None:
+    """Direction (degrees) of the flat face: perpendicular to the contact normal."""
+    if pair.normal_deg is not None:
+        return pair.normal_deg + 90.0
+    c = mechanism.coordinates(center)
+    k = mechanism.coordinates(pair.point) if pair.point else None
+    if c is None or k is None or c == k:
+        return None
+    return math.degrees(math.atan2(k[1] - c[1], k[0] - c[0])) + 90.0

@@ -272,7 +272,8 @@ def _groups_from_blocks(
     for link in mechanism.moving_links:
         if link not in driver_set:
             members.setdefault(done[link], []).append(link)
-    built = {b: _build_group(mechanism, links, done) for b, links in members.items()}
+    members = _whole_pair_groups(mechanism, members, done)
+    built = {b: _build_group(mechanism, links, done, b) for b, links in members.items()}
     block_of_link = {link: b for b, links in members.items() for link in links}
     block_dag = nx.DiGraph()
     block_dag.add_nodes_from(built)
@@ -296,9 +297,66 @@ def _groups_from_blocks(
     )
 
 
-def _build_group(mechanism: Mechanism, links: list[str], done: dict[str, int]) -> AssurGroup:
+def _whole_pair_groups(
+    mechanism: Mechanism, members: dict[int, list[str]], done: dict[str, int]
+) -> dict[int, list[str]]:
+    """Merge blocks so that every pair lies within one group.
+
+    The fine blocks can split a pair's rows: in an RPP dyad the middle link's
+    angle is known from the guides, so it completes before its partner.
+    A block with fewer constraints than 3 per link is merged into the
+    earliest later block that shares a pair with it, until every group
+    satisfies 3·links = 2·pairs.
+    """
+    members = {b: list(v) for b, v in members.items()}
+    group_of = {link: b for b, links in members.items() for link in links}
+    for b in sorted(members):
+        while b in members:
+            links = members[b]
+            pairs = _group_pairs(mechanism, links, done, b)[0]
+            if 2 * len(pairs) >= 3 * len(links):
+                break
+            later = [
+                group_of[p.other(x)]
+                for x in links
+                for p in mechanism.pairs_of(x)
+                if p.other(x) in group_of and group_of[p.other(x)] > b
+            ]
+            if not later:
+                break
+            target = min(later)
+            rank = {x: i for i, x in enumerate(mechanism.links)}
+            members[target] = sorted(links + members[target], key=rank.__getitem__)
+            for x in links:
+                group_of[x] = target
+            del members[b]
+    return members
+
+
+def _build_group(
+    mechanism: Mechanism, links: list[str], done: dict[str, int], level: int
+) -> AssurGroup:
+    pairs, joints, external_letter, middle_letter = _group_pairs(mechanism, links, done, level)
+    if 3 * len(links) != 2 * len(pairs):
+        raise DecompositionError(
+            f"group {','.join(links)} has {len(pairs)} pairs for {len(links)} links "
+            "(3·links = 2·pairs fails)",
+            links,
+        )
+    n_external = sum(1 for p in pairs if p.external)
+    assur_class = classify_group(links, joints)
+    kind = None
+    if len(links) == 2:
+        a, b = links
+        kind = _dyad_kind(external_letter.get(a, "?") + middle_letter + external_letter.get(b, "?"))
+    return AssurGroup(tuple(links), tuple(pairs), assur_class, n_external, kind)
+
+
+def _group_pairs(
+    mechanism: Mechanism, links: list[str], done: dict[str, int], level: int
+) -> tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]:
+    """Pairs of a group known at ``level``: internal joints, external letters, middle letter."""
     members = set(links)
-    level = done[links[0]]
     pairs: list[GroupPair] = []
     joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
     external_letter: dict[str, str] = {}
@@ -335,19 +393,7 @@ def _build_group(mechanism: Mechanism, links: list[str], done: dict[str, int]) -
             elif done[other] < level:
                 pairs.append(GroupPair(p.kind, (link, other), p.point, True))
                 external_letter.setdefault(link, p.kind.value)
-    n_external = sum(1 for p in pairs if p.external)
-    if 3 * len(links) != 2 * len(pairs):
-        raise DecompositionError(
-            f"group {','.join(links)} has {len(pairs)} pairs for {len(links)} links "
-            "(3·links = 2·pairs fails)",
-            links,
-        )
-    assur_class = classify_group(links, joints)
-    kind = None
-    if len(links) == 2:
-        a, b = links
-        kind = _dyad_kind(external_letter.get(a, "?") + middle_letter + external_letter.get(b, "?"))
-    return AssurGroup(tuple(links), tuple(pairs), assur_class, n_external, kind)
+    return pairs, joints, external_letter, middle_letter
 
 
 _DYAD_KINDS = {"RRR": "RRR", "RRP": "RRP", "PRR": "RRP", "RPR": "RPR", "PRP": "PRP",

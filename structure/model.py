@@ -200,6 +200,7 @@ class Mechanism:
     graph: nx.MultiGraph = field(init=False, repr=False, compare=False)
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
     hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
+    _by_id: dict[int, Pair] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "points", MappingProxyType(dict(self.points)))
@@ -211,6 +212,7 @@ class Mechanism:
         object.__setattr__(self, "links", links)
         object.__setattr__(self, "graph", _freeze_graph(self.pairs, links))
         object.__setattr__(self, "hinges", _hinges(self.pairs))
+        object.__setattr__(self, "_by_id", {p.id: p for p in self.pairs})
 
     # ------------------------------------------------------------------ build
     @classmethod
@@ -297,9 +299,8 @@ class Mechanism:
             yield data["pair"]
 
     def pair(self, pair_id: int) -> Pair:
-        return self.pairs[pair_id - 1] if self.pairs[pair_id - 1].id == pair_id else next(
-            p for p in self.pairs if p.id == pair_id
-        )
+        """The pair with id ``pair_id``."""
+        return self._by_id[pair_id]
 
     def coordinates(self, point: str) -> tuple[float, float] | None:
         p = self.points.get(point)

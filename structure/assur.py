@@ -169,7 +169,7 @@ def _without_link(mechanism: Mechanism, link: str) -> Mechanism | None:
     pairs = tuple(p for p in mechanism.pairs if link not in p.links)
     try:
         return validated(mechanism.evolve(pairs=pairs))
-    except Exception:  # noqa: BLE001 - a removal that disconnects the chain is no candidate
+    except Exception:
         return None
 
 
@@ -201,13 +201,17 @@ def _set_aside_redundancy(
                 best = (link, trial, trial_analysis)
                 break
         if best is None:
-            trial = validated(current.evolve(pairs=tuple(p for p in current.pairs if p.id != worst)))
+            trial = validated(
+                current.evolve(pairs=tuple(p for p in current.pairs if p.id != worst))
+            )
             removed_pairs.append(worst)
             current, analysis = trial, _analysis(trial, drivers)
             continue
         link, current, analysis = best
         removed_links.append(link)
-        removed_pairs.extend(p.id for p in mechanism.pairs if link in p.links and p.id not in removed_pairs)
+        removed_pairs.extend(
+            p.id for p in mechanism.pairs if link in p.links and p.id not in removed_pairs
+        )
     return current, removed_links, removed_pairs
 
 
@@ -242,7 +246,8 @@ def decompose(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Dec
     structural = generic_rank(system)
     if structural.blocks is None:
         loose = sorted(
-            {system.unknowns[u].owner for u, _ in structural.free if u >= 0}, key=current.links.index
+            {system.unknowns[u].owner for u, _ in structural.free if u >= 0},
+            key=current.links.index,
         )
         raise DecompositionError(
             "the drivers do not determine link(s) " + ", ".join(loose or ["?"]), loose
@@ -293,7 +298,12 @@ def _groups_from_blocks(
     dag.add_nodes_from(range(len(groups)))
     dag.add_edges_from((index[u], index[v]) for u, v in block_dag.edges)
     return Decomposition(
-        mechanism, tuple(drivers), groups, nx.freeze(dag), tuple(removed_links), tuple(removed_pairs)
+        mechanism,
+        tuple(drivers),
+        groups,
+        nx.freeze(dag),
+        tuple(removed_links),
+        tuple(removed_pairs),
     )
 
 

@@ -40,7 +40,9 @@ def _parser() -> argparse.ArgumentParser:
         "--driver", action="append", metavar="L", help="driving link (repeat for several)"
     )
     classify.add_argument(
-        "--all-drivers", action="store_true", help="list the groups for every admissible driver choice"
+        "--all-drivers",
+        action="store_true",
+        help="list the groups for every admissible driver choice",
     )
     classify.add_argument("--json", action="store_true", help="print one JSON object")
     return parser

@@ -37,14 +37,14 @@ from .model import Mechanism, PairKind
 
 __all__ = [
     "ConstraintSystem",
+    "MissingGeometry",
     "Realization",
     "RowKind",
     "Unknown",
     "constraint_system",
-    "MissingGeometry",
     "jacobian",
-    "row_entries",
     "random_realization",
+    "row_entries",
     "sketch_realization",
 ]
 
@@ -250,7 +250,7 @@ def random_realization(system: ConstraintSystem, seed: int = 20261121) -> Realiz
     for r, kind in enumerate(system.row_kind):
         if kind is RowKind.PIN:
             pair = m.pair(system.row_pair[r])
-            points.append(pin_xy.get(pair.point, None))
+            points.append(pin_xy.get(pair.point))
             if points[-1] is None:  # pin on the ground: one fixed point per hinge
                 pin_xy[pair.point] = rng.uniform(-1, 1, 2)
                 points[-1] = pin_xy[pair.point]
@@ -318,7 +318,9 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
         if pair.point is None:
             missing.append(f"pair {pair.label} (line {pair.line_no}) names no point")
         elif m.coordinates(pair.point) is None:
-            missing.append(f"point {pair.point} (pair {pair.label}, line {pair.line_no}) has no coordinates")
+            missing.append(
+                f"point {pair.point} (pair {pair.label}, line {pair.line_no}) has no coordinates"
+            )
         else:
             point = np.array(m.coordinates(pair.point), dtype=float)
         if kind in (RowKind.SLIDE, RowKind.SLIDE_ANGLE):
@@ -399,7 +401,9 @@ def row_entries(
             p0 = uo[system.pos[link]]
             a0 = uo[system.ang[link]]
             lv = lever(link)
-            out.extend([(0, p0, sign), (1, p0 + 1, sign), (0, a0, sign * lv[0]), (1, a0, sign * lv[1])])
+            out.extend(
+                [(0, p0, sign), (1, p0 + 1, sign), (0, a0, sign * lv[0]), (1, a0, sign * lv[1])]
+            )
         return out
     # PIN: link position + rotated offset - pin = 0
     link = system.row_link[r]

@@ -140,7 +140,11 @@ class Matcher:
     @property
     def free_units(self) -> list[tuple[int, int]]:
         """``(unknown block, free units)`` for every block not fully matched."""
-        return [(u, c - l) for u, (c, l) in enumerate(zip(self.cap, self.load, strict=True)) if l < c]
+        return [
+            (u, c - used)
+            for u, (c, used) in enumerate(zip(self.cap, self.load, strict=True))
+            if used < c
+        ]
 
 
 def irreducible_blocks(

@@ -175,7 +175,9 @@ def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
         with path.open(encoding="utf-8") as handle:
             return parse_edgelist(handle, source=str(path))
     except OSError as exc:
-        raise EdgeListError(str(path), [EdgeListProblem(0, "", f"cannot read: {exc.strerror}")]) from exc
+        raise EdgeListError(
+            str(path), [EdgeListProblem(0, "", f"cannot read: {exc.strerror}")]
+        ) from exc
     except UnicodeDecodeError as exc:
         raise EdgeListError(str(path), [EdgeListProblem(0, "", "not a UTF-8 text file")]) from exc
 
@@ -216,4 +218,3 @@ def write_edgelist(mechanism: Mechanism) -> str:
         on = f" on={p.on}" if p.on is not None else ""
         out.append(f"point {p.name} {_fmt(p.x)} {_fmt(p.y)}{on}")
     return "\n".join(out) + "\n"
-

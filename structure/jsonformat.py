@@ -42,7 +42,9 @@ def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
         data = json.loads(text)
     except json.JSONDecodeError as exc:
         line = text.splitlines()[exc.lineno - 1] if text.splitlines() else ""
-        raise EdgeListError(source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")])
+        raise EdgeListError(
+            source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")]
+        ) from None
     return mechanism_from_dict(data, source)
 
 

@@ -374,7 +374,10 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
     if "centers" in opts:
         parts = opts["centers"].split(",")
         if len(parts) != 2 or not any(parts):
-            return None, "centers=O1,O2 names the centres of curvature on a and b (one may be empty)"
+            return (
+                None,
+                "centers=O1,O2 names the centres of curvature on a and b (one may be empty)",
+            )
         fields["centers"] = (parts[0] or None, parts[1] or None)
     return Pair(pair_id, kind, a, b, point, line_no=line_no, **fields), ""
 

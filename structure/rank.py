@@ -91,9 +91,7 @@ class RankAnalysis:
 
     @property
     def dependent_drivers(self) -> list[str]:
-        return [
-            self.system.row_link[r] for r in self.dependent if r >= self.system.n_pair_rows
-        ]
+        return [self.system.row_link[r] for r in self.dependent if r >= self.system.n_pair_rows]
 
 
 def _match(system: ConstraintSystem) -> tuple[Matcher, dict[int, int]]:
@@ -128,9 +126,14 @@ def _blocks_regular(
         if units:
             rows_of[block_of[units[0]]].append(r)
     for b, units in enumerate(blocks):
-        if len(units) == 1 and len(rows_of[b]) == 1 and system.row_kind[rows_of[b][0]] in (
-            RowKind.DRIVER,
-            RowKind.PROBE,
+        if (
+            len(units) == 1
+            and len(rows_of[b]) == 1
+            and system.row_kind[rows_of[b][0]]
+            in (
+                RowKind.DRIVER,
+                RowKind.PROBE,
+            )
         ):
             continue  # a single driver/probe row on one block is regular by construction
         cols: dict[int, int] = {}
@@ -141,11 +144,16 @@ def _blocks_regular(
         a = np.zeros((size, size))
         i = 0
         for r in rows_of[b]:
+            matched = len(assigned[r])
+            if i + matched > size:
+                return False
             for lr, col, value in row_entries(system, realization, r, uo):
                 j = cols.get(col)
                 if j is not None:
-                    a[i + lr, j] = value
-            i += system.row_size[r]
+                    # a half-matched row block stands for one generic combination of its rows
+                    weight = 1.0 if matched == system.row_size[r] else (1.0, 0.61)[lr]
+                    a[i + (lr if matched == system.row_size[r] else 0), j] += weight * value
+            i += matched
         if i != size:
             return False
         s = np.linalg.svd(a, compute_uv=False)

@@ -87,7 +87,9 @@ def replace_higher_pairs(
     taken = set(mechanism.links) | set(mechanism.points)
     removed_ids: set[int] = set()
     rollers: dict[int, RollerRemoval] = {}
-    contact: dict[int, tuple[str, str, str | None, str | None]] = {}  # pid -> a, b, center a, center b
+    contact: dict[
+        int, tuple[str, str, str | None, str | None]
+    ] = {}  # pid -> a, b, center a, center b
 
     for p in highs:
         a, b = p.a, p.b
@@ -141,7 +143,9 @@ def replace_higher_pairs(
             center = (cb if flat == a else ca) or _fresh(f"{v}.{curved}", taken)
             angle = _face_angle(mechanism, p, center)
             r_pair = Pair(next_id, PairKind.R, curved, v, center, line_no=p.line_no)
-            p_pair = Pair(next_id + 1, PairKind.P, v, flat, center, angle_deg=angle, line_no=p.line_no)
+            p_pair = Pair(
+                next_id + 1, PairKind.P, v, flat, center, angle_deg=angle, line_no=p.line_no
+            )
             made = (r_pair, p_pair)
         next_id += 2
         new_pairs.extend(made)

@@ -188,7 +188,8 @@ def format_report(report: StructuralReport, choices: Sequence[DriverChoice] = ()
                 r = rep.roller
                 out.append(
                     f"  roller {r.roller} removed with pair {r.removed_pairs[0].label} "
-                    f"(its spin is passive); contact moved to its axis {r.axis} on link {r.follower}"
+                    f"(its spin is passive); contact moved to its axis {r.axis} "
+                    f"on link {r.follower}"
                 )
             new = ", ".join(p.label for p in rep.new_pairs)
             out.append(
@@ -295,7 +296,9 @@ def _group_dict(g: AssurGroup) -> dict[str, Any]:
     }
 
 
-def report_to_dict(report: StructuralReport, choices: Sequence[DriverChoice] = ()) -> dict[str, Any]:
+def report_to_dict(
+    report: StructuralReport, choices: Sequence[DriverChoice] = ()
+) -> dict[str, Any]:
     """JSON-ready dict: ``n, P5, P4, redundant, passive, W, replaced, groups, ...``."""
     out: dict[str, Any] = {"name": report.mechanism.name, "source": report.mechanism.source}
     out.update(_mobility_dict(report.mobility))
@@ -342,4 +345,3 @@ def mobility_error_dict(error: MobilityError) -> dict[str, Any]:
     if isinstance(error.mobility, Mobility):
         out.update(_mobility_dict(error.mobility))
     return out
-

@@ -35,7 +35,7 @@ import networkx as nx
 from .constraints import MissingGeometry, constraint_system, sketch_realization
 from .errors import DecompositionError, MobilityError
 from .model import Mechanism, PairKind, validated
-from .rank import RankAnalysis, generic_rank, geometric_rank
+from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
 
 __all__ = [
     "AssurGroup",
@@ -153,16 +153,23 @@ def driver_candidates(mechanism: Mechanism) -> tuple[str, ...]:
     return tuple(out)
 
 
+def _geometric_analysis(mechanism: Mechanism, drivers: Sequence[str]) -> RankAnalysis | None:
+    """The sketch's rank when coordinates are complete (and the system small enough)."""
+    if not mechanism.points:
+        return None
+    system = constraint_system(mechanism, drivers)
+    if system.n_scalar_unknowns > DENSE_LIMIT:
+        return None
+    try:
+        return geometric_rank(system, sketch_realization(system))
+    except MissingGeometry:
+        return None
+
+
 def _analysis(mechanism: Mechanism, drivers: Sequence[str]) -> RankAnalysis:
     """Generic rank, replaced by the sketch's rank when coordinates are complete."""
-    system = constraint_system(mechanism, drivers)
-    generic = generic_rank(system)
-    if mechanism.points:
-        try:
-            return geometric_rank(system, sketch_realization(system))
-        except MissingGeometry:
-            pass
-    return generic
+    geometric = _geometric_analysis(mechanism, drivers)
+    return geometric or generic_rank(constraint_system(mechanism, drivers))
 
 
 def _without_link(mechanism: Mechanism, link: str) -> Mechanism | None:
@@ -215,11 +222,19 @@ def _set_aside_redundancy(
     return current, removed_links, removed_pairs
 
 
-def decompose(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Decomposition:
+def decompose(
+    mechanism: Mechanism,
+    drivers: Sequence[str] | None = None,
+    *,
+    analyses: tuple[RankAnalysis, RankAnalysis | None] | None = None,
+) -> Decomposition:
     """Split a lower-pair mechanism into Assur groups in solve order.
 
     ``drivers`` defaults to the mechanism's own. Redundant constraints are set
     aside first (the redundant link is removed, as the textbook does).
+    ``analyses`` are the generic and geometric rank analyses of the same
+    mechanism driven by the same drivers, when already computed
+    (:func:`~structure.mobility.mobility_analysis`).
 
     Raises
     ------
@@ -232,7 +247,12 @@ def decompose(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Dec
     drivers = tuple(mechanism.driver_links if drivers is None else drivers)
     if any(p.kind is PairKind.H for p in mechanism.pairs):
         raise DecompositionError("replace the higher pairs before decomposing")
-    analysis = _analysis(mechanism, drivers)
+    if analyses is None:
+        generic = generic_rank(constraint_system(mechanism, drivers))
+        geometric = _geometric_analysis(mechanism, drivers)
+    else:
+        generic, geometric = analyses
+    analysis = geometric if geometric is not None else generic
     if analysis.dependent_drivers:
         raise MobilityError(
             "the motion of driver(s) "
@@ -240,11 +260,15 @@ def decompose(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Dec
             + " is already fixed by the other pairs and drivers"
         )
     current, removed_links, removed_pairs = mechanism, [], []
-    if analysis.dependent_pairs:
-        current, removed_links, removed_pairs = _set_aside_redundancy(mechanism, drivers, analysis)
-    system = constraint_system(current, drivers)
-    structural = generic_rank(system)
+    structural = generic
+    if analysis.dependent_pairs or generic.blocks is None:
+        if analysis.dependent_pairs:
+            current, removed_links, removed_pairs = _set_aside_redundancy(
+                mechanism, drivers, analysis
+            )
+        structural = generic_rank(constraint_system(current, drivers))
     if structural.blocks is None:
+        system = structural.system
         loose = sorted(
             {system.unknowns[u].owner for u, _ in structural.free if u >= 0},
             key=current.links.index,
@@ -371,7 +395,7 @@ def _group_pairs(
     joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
     external_letter: dict[str, str] = {}
     middle_letter = ""
-    compound = {h.point: h for h in mechanism.hinges if len(h.links) > 2}
+    compound = mechanism.compound_hinges
     seen_hinges: set[str] = set()
     seen_pairs: set[int] = set()
     for link in links:

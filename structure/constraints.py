@@ -153,14 +153,15 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
     def add(kind: RowKind, size: int, adj: tuple[int, ...], pair_id: int, link: str = "") -> None:
         kinds.append(kind)
         sizes.append(size)
-        adjs.append(adj)
+        # newest unknowns first: the matching then stays local to the group being added
+        adjs.append(tuple(sorted(adj, reverse=True)))
         pair_of.append(pair_id)
         link_of.append(link)
 
     def body(link: str) -> tuple[int, ...]:
         return () if link == ground else (pos[link], ang[link])
 
-    compound = {h.point: h for h in mechanism.hinges if len(h.links) > 2}
+    compound = mechanism.compound_hinges
     done_points: set[str] = set()
     for p in mechanism.pairs:
         if p.kind is PairKind.R:

@@ -27,11 +27,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .constraints import ConstraintSystem, MissingGeometry, constraint_system, sketch_realization
+from .constraints import (
+    ConstraintSystem,
+    MissingGeometry,
+    Realization,
+    constraint_system,
+    sketch_realization,
+)
 from .model import Mechanism, PairKind
-from .rank import RankAnalysis, generic_rank, geometric_rank, null_space
+from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank, null_space
 
-__all__ = ["Mobility", "PassiveMotion", "Redundancy", "mobility", "rank_analysis"]
+__all__ = ["Mobility", "PassiveMotion", "Redundancy", "counts", "mobility", "mobility_analysis"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,23 +107,17 @@ def counts(mechanism: Mechanism) -> tuple[int, int, int]:
     return len(mechanism.moving_links), len(mechanism.pairs) - p4, p4
 
 
-def rank_analysis(
-    mechanism: Mechanism, drivers: Sequence[str] = ()
-) -> tuple[RankAnalysis, RankAnalysis | None, tuple[str, ...]]:
-    """Generic and (when coordinates allow) geometric rank of the driven system.
-
-    Returns ``(generic, geometric or None, notes)``.
-    """
-    system = constraint_system(mechanism, drivers)
-    generic = generic_rank(system)
-    geometric, notes = _geometric(system)
-    return generic, geometric, notes
-
-
-def _geometric(system: ConstraintSystem) -> tuple[RankAnalysis | None, tuple[str, ...]]:
+def _geometric(
+    system: ConstraintSystem,
+) -> tuple[RankAnalysis | None, tuple[str, ...], Realization | None]:
     m = system.mechanism
     if not m.points:
-        return None, ()
+        return None, (), None
+    if system.n_scalar_unknowns > DENSE_LIMIT:
+        return None, (
+            f"the geometric check is limited to {DENSE_LIMIT} scalar unknowns "
+            f"({system.n_scalar_unknowns} here); only the structural count was used",
+        ), None
     try:
         realization = sketch_realization(system)
     except MissingGeometry as exc:
@@ -125,8 +125,8 @@ def _geometric(system: ConstraintSystem) -> tuple[RankAnalysis | None, tuple[str
             "coordinates are incomplete, so the geometric check was skipped: "
             + "; ".join(exc.reasons[:3])
             + ("; ..." if len(exc.reasons) > 3 else ""),
-        )
-    return geometric_rank(system, realization), ()
+        ), None
+    return geometric_rank(system, realization), (), realization
 
 
 def mobility(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Mobility:
@@ -136,30 +136,52 @@ def mobility(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Mobi
     motions found geometrically, which are those left once the drivers are
     fixed.
     """
+    return mobility_analysis(mechanism, drivers)[0]
+
+
+def _usable_drivers(mechanism: Mechanism, drivers: Sequence[str]) -> tuple[str, ...]:
+    ground = mechanism.ground
+    return tuple(
+        d
+        for d in drivers
+        if d in mechanism.graph
+        and any(p.kind is not PairKind.H and p.other(d) == ground for p in mechanism.pairs_of(d))
+    )
+
+
+def mobility_analysis(
+    mechanism: Mechanism, drivers: Sequence[str] | None = None
+) -> tuple[Mobility, RankAnalysis, RankAnalysis | None]:
+    """:func:`mobility` and the rank analyses behind it (generic, geometric or None).
+
+    The analyses are of the system driven by ``drivers``; the decomposition
+    reuses them instead of building the system again.
+    """
     drivers = mechanism.driver_links if drivers is None else tuple(drivers)
     n, p5, p4 = counts(mechanism)
-    system = constraint_system(mechanism)
+    system = constraint_system(mechanism, _usable_drivers(mechanism, drivers))
     generic = generic_rank(system)
-    geometric, notes = _geometric(system)
+    geometric, notes, realization = _geometric(system)
     redundant = [
         Redundancy(pid, mechanism.pair(pid).label, k, "structural", mechanism.pair(pid).line_no)
         for pid, k in sorted(generic.dependent_pairs.items())
     ]
     geo_passive: dict[str, int] = {}
-    if geometric is not None:
+    if geometric is not None and realization is not None:
         extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
         redundant.extend(
             Redundancy(pid, mechanism.pair(pid).label, k, "geometric", mechanism.pair(pid).line_no)
             for pid, k in sorted(extra.items())
         )
-        geo_passive = _geometric_passive(mechanism, drivers)
+        geo_passive = _geometric_passive(system, realization)
     declared = {p.roller: 1 for p in mechanism.pairs if p.roller is not None}
     passive = []
     for link in mechanism.moving_links:
         d, g = declared.get(link, 0), geo_passive.get(link, 0)
         if d or g:
             passive.append(PassiveMotion(link, max(d, g), "roller" if d >= g else "geometric"))
-    return Mobility(n, p5, p4, tuple(redundant), tuple(passive), geometric is not None, notes)
+    mob = Mobility(n, p5, p4, tuple(redundant), tuple(passive), geometric is not None, notes)
+    return mob, generic, geometric
 
 
 def _extra_geometric(structural: dict[int, int], geometric: dict[int, int]) -> dict[int, int]:
@@ -178,21 +200,16 @@ def _extra_geometric(structural: dict[int, int], geometric: dict[int, int]) -> d
     return dict(sorted(out.items()))
 
 
-def _geometric_passive(mechanism: Mechanism, drivers: Sequence[str]) -> dict[str, int]:
+def _geometric_passive(system: ConstraintSystem, realization: Realization) -> dict[str, int]:
     """Null-space directions (drivers fixed) that move one link only, per link."""
-    valid = [d for d in drivers if d in mechanism.graph]
-    system = constraint_system(mechanism, valid)
-    try:
-        realization = sketch_realization(system)
-    except MissingGeometry:
-        return {}
     N = null_space(system, realization)
     if N.shape[1] == 0:
         return {}
     uo, _ = system.scalar_offsets()
     out: dict[str, int] = {}
-    for link in mechanism.moving_links:
-        cols = [int(uo[system.pos[link]]), int(uo[system.pos[link]]) + 1, int(uo[system.ang[link]])]
+    for link in system.mechanism.moving_links:
+        p0 = int(uo[system.pos[link]])
+        cols = [p0, p0 + 1, int(uo[system.ang[link]])]
         rest = np.delete(N, cols, axis=0)
         s = np.linalg.svd(rest, compute_uv=False) if rest.size else np.zeros(0)
         rank = int(np.sum(s > 1e-8))

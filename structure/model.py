@@ -200,6 +200,7 @@ class Mechanism:
     graph: nx.MultiGraph = field(init=False, repr=False, compare=False)
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
     hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
+    compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
     _by_id: dict[int, Pair] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -213,6 +214,8 @@ class Mechanism:
         object.__setattr__(self, "graph", _freeze_graph(self.pairs, links))
         object.__setattr__(self, "hinges", _hinges(self.pairs))
         object.__setattr__(self, "_by_id", {p.id: p for p in self.pairs})
+        compound = {h.point: h for h in self.hinges if len(h.links) > 2}
+        object.__setattr__(self, "compound_hinges", MappingProxyType(compound))
 
     # ------------------------------------------------------------------ build
     @classmethod

@@ -22,7 +22,7 @@ import networkx as nx
 from .assur import AssurGroup, Decomposition, decompose, driver_candidates, roman
 from .constraints import constraint_system
 from .errors import DecompositionError, MobilityError
-from .mobility import Mobility, mobility
+from .mobility import Mobility, mobility_analysis
 from .model import Mechanism
 from .rank import generic_rank
 from .replacement import Replacement, replace_higher_pairs
@@ -114,9 +114,8 @@ def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Struc
     """
     if drivers is not None:
         mechanism = mechanism.with_drivers(drivers)
-    mob = mobility(mechanism)
+    mob, generic, geometric = mobility_analysis(mechanism)
     replaced, replacements = replace_higher_pairs(mechanism)
-    rmob = mobility(replaced) if replacements else mob
     w = mob.W
     if w <= 0:
         why = "it is a rigid structure" if w == 0 else "it is over-constrained"
@@ -140,7 +139,13 @@ def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Struc
                 f"independent drivers ({', '.join(drivers_used) or 'none'})",
                 mob,
             )
-    decomposition = decompose(replaced, drivers_used)
+    if replacements or chosen:
+        rmob, generic, geometric = mobility_analysis(replaced, drivers_used)
+    else:
+        rmob = mob
+    if not replacements:
+        rmob = mob
+    decomposition = decompose(replaced, drivers_used, analyses=(generic, geometric))
     return StructuralReport(
         mechanism, mob, replaced, rmob, replacements, tuple(drivers_used), chosen, decomposition
     )

@@ -301,8 +301,8 @@ def _groups_from_blocks(
     for link in mechanism.moving_links:
         if link not in driver_set:
             members.setdefault(done[link], []).append(link)
-    members = _whole_pair_groups(mechanism, members, done)
-    built = {b: _build_group(mechanism, links, done, b) for b, links in members.items()}
+    members, found = _whole_pair_groups(mechanism, members, done)
+    built = {b: _build_group(links, found[b]) for b, links in members.items()}
     block_of_link = {link: b for b, links in members.items() for link in links}
     block_dag = nx.DiGraph()
     block_dag.add_nodes_from(built)
@@ -331,24 +331,30 @@ def _groups_from_blocks(
     )
 
 
+_R = PairKind.R  # enum member lookups are slow in hot loops
+
+_GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]
+
+
 def _whole_pair_groups(
     mechanism: Mechanism, members: dict[int, list[str]], done: dict[str, int]
-) -> dict[int, list[str]]:
+) -> tuple[dict[int, list[str]], dict[int, _GroupPairs]]:
     """Merge blocks so that every pair lies within one group.
 
     The fine blocks can split a pair's rows: in an RPP dyad the middle link's
     angle is known from the guides, so it completes before its partner.
     A block with fewer constraints than 3 per link is merged into the
     earliest later block that shares a pair with it, until every group
-    satisfies 3·links = 2·pairs.
+    satisfies 3·links = 2·pairs. Returns the groups and their pairs.
     """
     members = {b: list(v) for b, v in members.items()}
     group_of = {link: b for b, links in members.items() for link in links}
+    found: dict[int, _GroupPairs] = {}
     for b in sorted(members):
         while b in members:
             links = members[b]
-            pairs = _group_pairs(mechanism, links, done, b)[0]
-            if 2 * len(pairs) >= 3 * len(links):
+            found[b] = _group_pairs(mechanism, links, done, b)
+            if 2 * len(found[b][0]) >= 3 * len(links):
                 break
             later = [
                 group_of[p.other(x)]
@@ -364,13 +370,12 @@ def _whole_pair_groups(
             for x in links:
                 group_of[x] = target
             del members[b]
-    return members
+            del found[b]
+    return members, found
 
 
-def _build_group(
-    mechanism: Mechanism, links: list[str], done: dict[str, int], level: int
-) -> AssurGroup:
-    pairs, joints, external_letter, middle_letter = _group_pairs(mechanism, links, done, level)
+def _build_group(links: list[str], found: _GroupPairs) -> AssurGroup:
+    pairs, joints, external_letter, middle_letter = found
     if 3 * len(links) != 2 * len(pairs):
         raise DecompositionError(
             f"group {','.join(links)} has {len(pairs)} pairs for {len(links)} links "
@@ -404,7 +409,7 @@ def _group_pairs(
                 continue
             seen_pairs.add(p.id)
             other = p.other(link)
-            h = compound.get(p.point) if p.kind is PairKind.R and p.point else None
+            h = compound.get(p.point) if compound and p.kind is _R and p.point else None
             if h is not None:
                 if h.point in seen_hinges:
                     continue
@@ -412,12 +417,12 @@ def _group_pairs(
                 inside = [x for x in h.links if x in members]
                 known = [x for x in h.links if x not in members and done[x] < level]
                 for x in inside[1:]:
-                    pairs.append(GroupPair(PairKind.R, (inside[0], x), h.point, False))
+                    pairs.append(GroupPair(_R, (inside[0], x), h.point, False))
                 if len(inside) > 1:
                     joints.append(tuple(inside))
                     middle_letter = "R"
                 if known:
-                    pairs.append(GroupPair(PairKind.R, (inside[0], known[0]), h.point, True))
+                    pairs.append(GroupPair(_R, (inside[0], known[0]), h.point, True))
                     external_letter.setdefault(inside[0], "R")
                 continue
             if other in members:

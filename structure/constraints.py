@@ -234,34 +234,34 @@ class Realization:
     P driver.
     """
 
-    origin: dict[str, np.ndarray]
-    point: tuple[np.ndarray | None, ...]
-    direction: tuple[np.ndarray | None, ...]
+    origin: dict[str, tuple[float, float]]
+    point: tuple[tuple[float, float] | None, ...]
+    direction: tuple[tuple[float, float] | None, ...]
 
 
 def random_realization(system: ConstraintSystem, seed: int = 20261121) -> Realization:
     """A generic placement: random link origins, pin points and directions."""
     rng = np.random.default_rng(seed)
     m = system.mechanism
-    origin = {link: rng.uniform(-1, 1, 2) for link in m.links}
-    origin[m.ground] = np.zeros(2)
-    pin_xy = {name: rng.uniform(-1, 1, 2) for name in system.pin}
-    points: list[np.ndarray | None] = []
-    dirs: list[np.ndarray | None] = []
+    n_rows = len(system.row_kind)
+    origins = rng.uniform(-1, 1, (len(m.links), 2)).tolist()
+    origin: dict[str, tuple[float, float]] = {
+        link: (xy[0], xy[1]) for link, xy in zip(m.links, origins, strict=True)
+    }
+    origin[m.ground] = (0.0, 0.0)
+    raw_points = rng.uniform(-1, 1, (n_rows, 2)).tolist()
+    angles = rng.uniform(0, 2 * math.pi, n_rows)
+    raw_dirs = np.column_stack([np.cos(angles), np.sin(angles)]).tolist()
+    points: list[tuple[float, float] | None] = [(xy[0], xy[1]) for xy in raw_points]
+    dirs: list[tuple[float, float] | None] = [(xy[0], xy[1]) for xy in raw_dirs]
+    pin_xy: dict[str, tuple[float, float]] = {}
     for r, kind in enumerate(system.row_kind):
         if kind is RowKind.PIN:
-            pair = m.pair(system.row_pair[r])
-            points.append(pin_xy.get(pair.point))
-            if points[-1] is None:  # pin on the ground: one fixed point per hinge
-                pin_xy[pair.point] = rng.uniform(-1, 1, 2)
-                points[-1] = pin_xy[pair.point]
-        else:
-            points.append(rng.uniform(-1, 1, 2))
-        t = rng.uniform(0, 2 * math.pi)
-        dirs.append(np.array([math.cos(t), math.sin(t)]))
-    # the two rows of a P pair share one contact point and direction
-    for r, kind in enumerate(system.row_kind):
-        if kind is RowKind.SLIDE:
+            # every link at one hinge shares one point
+            point = m.pair(system.row_pair[r]).point
+            points[r] = pin_xy.setdefault(point, points[r])  # type: ignore[arg-type]
+        elif kind is RowKind.SLIDE:
+            # the two rows of a P pair share one contact point and direction
             points[r], dirs[r] = points[r - 1], dirs[r - 1]
     return Realization(origin, tuple(points), tuple(dirs))
 
@@ -274,25 +274,25 @@ class MissingGeometry(Exception):
         super().__init__("; ".join(self.reasons))
 
 
-def _contact_normal(mechanism: Mechanism, pair_id: int) -> np.ndarray | None:
+def _contact_normal(mechanism: Mechanism, pair_id: int) -> tuple[float, float] | None:
     p = mechanism.pair(pair_id)
     if p.normal is not None:
-        return np.array([math.cos(p.normal), math.sin(p.normal)])
+        return (math.cos(p.normal), math.sin(p.normal))
     xy = mechanism.coordinates
     if p.centers is None:
         return None
     ca, cb = (None if c is None else xy(c) for c in p.centers)
     k = xy(p.point) if p.point else None
     if ca is not None and cb is not None:
-        v = np.subtract(cb, ca)
+        vx, vy = cb[0] - ca[0], cb[1] - ca[1]
     elif ca is not None and k is not None:
-        v = np.subtract(k, ca)
+        vx, vy = k[0] - ca[0], k[1] - ca[1]
     elif cb is not None and k is not None:
-        v = np.subtract(k, cb)
+        vx, vy = k[0] - cb[0], k[1] - cb[1]
     else:
         return None
-    norm = float(np.hypot(*v))
-    return None if norm == 0 else v / norm
+    norm = math.hypot(vx, vy)
+    return None if norm == 0 else (vx / norm, vy / norm)
 
 
 def sketch_realization(system: ConstraintSystem) -> Realization:
@@ -303,15 +303,15 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
     """
     m = system.mechanism
     missing: list[str] = []
-    points: list[np.ndarray | None] = []
-    dirs: list[np.ndarray | None] = []
+    points: list[tuple[float, float] | None] = []
+    dirs: list[tuple[float, float] | None] = []
     for r, kind in enumerate(system.row_kind):
         point = direction = None
         if kind in (RowKind.DRIVER, RowKind.PROBE):
             link = system.row_link[r]
             for p in m.pairs_of(link):
                 if p.other(link) == m.ground and p.kind is PairKind.P and p.angle is not None:
-                    direction = np.array([math.cos(p.angle), math.sin(p.angle)])
+                    direction = (math.cos(p.angle), math.sin(p.angle))
             points.append(None)
             dirs.append(direction)
             continue
@@ -323,13 +323,13 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
                 f"point {pair.point} (pair {pair.label}, line {pair.line_no}) has no coordinates"
             )
         else:
-            point = np.array(m.coordinates(pair.point), dtype=float)
+            point = m.coordinates(pair.point)
         if kind in (RowKind.SLIDE, RowKind.SLIDE_ANGLE):
             if pair.angle is None:
                 if kind is RowKind.SLIDE:
                     missing.append(f"P pair {pair.label} (line {pair.line_no}) has no angle=")
             else:
-                direction = np.array([math.cos(pair.angle), math.sin(pair.angle)])
+                direction = (math.cos(pair.angle), math.sin(pair.angle))
         elif kind is RowKind.CONTACT:
             direction = _contact_normal(m, pair.id)
             if direction is None:
@@ -341,80 +341,87 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
         dirs.append(direction)
     if missing:
         raise MissingGeometry(missing)
-    origin = {link: np.zeros(2) for link in m.links}
+    origin = dict.fromkeys(m.links, (0.0, 0.0))
     return Realization(origin, tuple(points), tuple(dirs))
 
 
-def _perp(v: np.ndarray) -> np.ndarray:
-    return np.array([-v[1], v[0]])
+_HINGE = RowKind.HINGE
 
 
 def row_entries(
-    system: ConstraintSystem, realization: Realization, r: int, uo: np.ndarray
+    system: ConstraintSystem, realization: Realization, r: int, uo: Sequence[int]
 ) -> list[tuple[int, int, float]]:
     """Nonzeros ``(local_row, scalar_column, value)`` of row block ``r``.
 
     ``uo`` holds the scalar offset of each unknown block (from
-    :meth:`ConstraintSystem.scalar_offsets`).
+    :meth:`ConstraintSystem.scalar_offsets`, as a list).
     """
     m = system.mechanism
     kind = system.row_kind[r]
-    out: list[tuple[int, int, float]] = []
-    c = realization.point[r]
-    d = realization.direction[r]
-
-    def lever(link: str) -> np.ndarray:
-        return _perp(c - realization.origin[link])
-
+    ground = m.ground
+    origin = realization.origin
+    if kind is _HINGE:  # the common case first
+        cx, cy = realization.point[r]  # type: ignore[misc]
+        pair = m.pair(system.row_pair[r])
+        out: list[tuple[int, int, float]] = []
+        for link, sign in ((pair.a, 1.0), (pair.b, -1.0)):
+            if link == ground:
+                continue
+            ox, oy = origin[link]
+            p0 = uo[system.pos[link]]
+            a0 = uo[system.ang[link]]
+            out += (
+                (0, p0, sign),
+                (1, p0 + 1, sign),
+                (0, a0, -sign * (cy - oy)),
+                (1, a0, sign * (cx - ox)),
+            )
+        return out
+    out = []
     if kind is RowKind.PROBE:
         u = system.row_adj[r][0]
-        # a probe fixes one generic combination of the block's coordinates
-        for k in range(system.unknowns[u].size):
-            out.append((0, uo[u] + k, 1.0 + 0.37 * k))
-        return out
+        if system.row_size[r] == system.unknowns[u].size:
+            return [(k, uo[u] + k, 1.0) for k in range(system.row_size[r])]
+        # one generic combination of the block's coordinates
+        return [(0, uo[u] + k, 1.0 + 0.37 * k) for k in range(system.unknowns[u].size)]
     if kind is RowKind.DRIVER:
         u = system.row_adj[r][0]
         if system.unknowns[u].kind == "ang":
-            out.append((0, uo[u], 1.0))
-        else:
-            dd = d if d is not None else np.array([1.0, 0.0])
-            out.extend([(0, uo[u], float(dd[0])), (0, uo[u] + 1, float(dd[1]))])
-        return out
+            return [(0, uo[u], 1.0)]
+        dx, dy = realization.direction[r] or (1.0, 0.0)
+        return [(0, uo[u], dx), (0, uo[u] + 1, dy)]
     pair = m.pair(system.row_pair[r])
     if kind is RowKind.SLIDE_ANGLE:
-        for link, sign in ((pair.a, 1.0), (pair.b, -1.0)):
-            if link != m.ground:
-                out.append((0, uo[system.ang[link]], sign))
-        return out
+        return [
+            (0, uo[system.ang[link]], sign)
+            for link, sign in ((pair.a, 1.0), (pair.b, -1.0))
+            if link != ground
+        ]
+    cx, cy = realization.point[r]  # type: ignore[misc]
     if kind in (RowKind.SLIDE, RowKind.CONTACT):
-        n = _perp(d) if kind is RowKind.SLIDE else d
+        dx, dy = realization.direction[r]  # type: ignore[misc]
+        nx_, ny_ = (-dy, dx) if kind is RowKind.SLIDE else (dx, dy)
         for link, sign in ((pair.a, -1.0), (pair.b, 1.0)):
-            if link == m.ground:
+            if link == ground:
                 continue
+            ox, oy = origin[link]
             p0 = uo[system.pos[link]]
-            out.extend([(0, p0, sign * n[0]), (0, p0 + 1, sign * n[1])])
-            out.append((0, uo[system.ang[link]], sign * float(n @ lever(link))))
-        return out
-    if kind is RowKind.HINGE:
-        for link, sign in ((pair.a, 1.0), (pair.b, -1.0)):
-            if link == m.ground:
-                continue
-            p0 = uo[system.pos[link]]
-            a0 = uo[system.ang[link]]
-            lv = lever(link)
-            out.extend(
-                [(0, p0, sign), (1, p0 + 1, sign), (0, a0, sign * lv[0]), (1, a0, sign * lv[1])]
+            moment = nx_ * -(cy - oy) + ny_ * (cx - ox)
+            out += (
+                (0, p0, sign * nx_),
+                (0, p0 + 1, sign * ny_),
+                (0, uo[system.ang[link]], sign * moment),
             )
         return out
     # PIN: link position + rotated offset - pin = 0
     link = system.row_link[r]
+    ox, oy = origin[link]
     p0 = uo[system.pos[link]]
     a0 = uo[system.ang[link]]
-    lv = lever(link)
-    out.extend([(0, p0, 1.0), (1, p0 + 1, 1.0), (0, a0, lv[0]), (1, a0, lv[1])])
-    pin = system.pin.get(pair.point)
+    out += ((0, p0, 1.0), (1, p0 + 1, 1.0), (0, a0, -(cy - oy)), (1, a0, cx - ox))
+    pin = system.pin.get(pair.point) if pair.point is not None else None
     if pin is not None:
-        out.extend([(0, uo[pin], -1.0), (1, uo[pin] + 1, -1.0)])
+        out += ((0, uo[pin], -1.0), (1, uo[pin] + 1, -1.0))
     return out
 
 
@@ -430,11 +437,12 @@ def jacobian(
     >>> J.shape, int(np.linalg.matrix_rank(J))
     ((6, 6), 6)
     """
-    uo, _ = system.scalar_offsets()
+    offsets, _ = system.scalar_offsets()
+    uo = offsets.tolist()
     rows = range(len(system.row_kind)) if rows is None else rows
     rows = list(rows)
     starts = np.cumsum([0] + [system.row_size[r] for r in rows])
-    J = np.zeros((int(starts[-1]), int(uo[-1])))
+    J = np.zeros((int(starts[-1]), int(offsets[-1])))
     for i, r in enumerate(rows):
         for lr, col, value in row_entries(system, realization, r, uo):
             J[starts[i] + lr, col] = value

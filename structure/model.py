@@ -202,6 +202,7 @@ class Mechanism:
     hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
     _by_id: dict[int, Pair] = field(init=False, repr=False, compare=False)
+    _by_link: dict[str, list[Pair]] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "points", MappingProxyType(dict(self.points)))
@@ -214,6 +215,11 @@ class Mechanism:
         object.__setattr__(self, "graph", _freeze_graph(self.pairs, links))
         object.__setattr__(self, "hinges", _hinges(self.pairs))
         object.__setattr__(self, "_by_id", {p.id: p for p in self.pairs})
+        by_link: dict[str, list[Pair]] = {link: [] for link in links}
+        for p in self.pairs:
+            by_link[p.a].append(p)
+            by_link[p.b].append(p)
+        object.__setattr__(self, "_by_link", by_link)
         compound = {h.point: h for h in self.hinges if len(h.links) > 2}
         object.__setattr__(self, "compound_hinges", MappingProxyType(compound))
 
@@ -297,9 +303,8 @@ class Mechanism:
         return tuple(link for link in self.links if link != self.ground)
 
     def pairs_of(self, link: str) -> Iterator[Pair]:
-        """The pairs that touch ``link``."""
-        for _, _, data in self.graph.edges(link, data=True):
-            yield data["pair"]
+        """The pairs that touch ``link``, in file order."""
+        return iter(self._by_link.get(link, ()))
 
     def pair(self, pair_id: int) -> Pair:
         """The pair with id ``pair_id``."""

@@ -110,56 +110,66 @@ def _probe_system(system: ConstraintSystem, free: list[tuple[int, int]]) -> Cons
     )
 
 
-def _blocks_regular(
+def _singular_blocks(
     system: ConstraintSystem,
     blocks: list[list[int]],
     assigned: list[list[int]],
     realization: Realization,
-) -> bool:
-    """True when every irreducible block's square Jacobian is numerically regular."""
-    uo, _ = system.scalar_offsets()
-    block_of = np.empty(len(system.unknowns), dtype=int)
+    which: Sequence[int] | None = None,
+) -> list[int]:
+    """Indices of the irreducible blocks whose square Jacobian is numerically singular.
+
+    Blocks of equal size are stacked and their singular values computed in
+    one batched call.
+    """
+    offsets, _ = system.scalar_offsets()
+    uo = offsets.tolist()
+    block_of = [0] * len(system.unknowns)
     for b, units in enumerate(blocks):
-        block_of[units] = b
+        for u in units:
+            block_of[u] = b
     rows_of: list[list[int]] = [[] for _ in blocks]
     for r, units in enumerate(assigned):
         if units:
             rows_of[block_of[units[0]]].append(r)
-    for b, units in enumerate(blocks):
-        if (
-            len(units) == 1
-            and len(rows_of[b]) == 1
-            and system.row_kind[rows_of[b][0]]
-            in (
-                RowKind.DRIVER,
-                RowKind.PROBE,
-            )
-        ):
+    trivial = (RowKind.DRIVER, RowKind.PROBE)
+    by_size: dict[int, list[tuple[int, np.ndarray]]] = {}
+    bad: list[int] = []
+    for b in range(len(blocks)) if which is None else which:
+        units = blocks[b]
+        if len(units) == 1 and len(rows_of[b]) == 1 and system.row_kind[rows_of[b][0]] in trivial:
             continue  # a single driver/probe row on one block is regular by construction
         cols: dict[int, int] = {}
         for u in units:
             for k in range(system.unknowns[u].size):
-                cols[int(uo[u]) + k] = len(cols)
+                cols[uo[u] + k] = len(cols)
         size = len(cols)
         a = np.zeros((size, size))
         i = 0
         for r in rows_of[b]:
             matched = len(assigned[r])
+            whole = matched == system.row_size[r]
             if i + matched > size:
-                return False
+                break
             for lr, col, value in row_entries(system, realization, r, uo):
                 j = cols.get(col)
                 if j is not None:
                     # a half-matched row block stands for one generic combination of its rows
-                    weight = 1.0 if matched == system.row_size[r] else (1.0, 0.61)[lr]
-                    a[i + (lr if matched == system.row_size[r] else 0), j] += weight * value
+                    if whole:
+                        a[i + lr, j] += value
+                    else:
+                        a[i, j] += (1.0, 0.61)[lr] * value
             i += matched
         if i != size:
-            return False
-        s = np.linalg.svd(a, compute_uv=False)
-        if s[-1] <= _RANK_TOL * max(1.0, s[0]):
-            return False
-    return True
+            bad.append(b)
+            continue
+        by_size.setdefault(size, []).append((b, a))
+    for items in by_size.values():
+        stack = np.stack([a for _, a in items])
+        s = np.linalg.svd(stack, compute_uv=False)
+        ratio = s[:, -1] / np.maximum(1.0, s[:, 0])
+        bad.extend(b for (b, _), x in zip(items, ratio, strict=True) if x <= _RANK_TOL)
+    return sorted(bad)
 
 
 def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis:
@@ -180,8 +190,13 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     for u, k in free:
         assigned.append([u] * k)
     blocks = irreducible_blocks(probed.row_adj, assigned, len(system.unknowns))
-    realization = random_realization(probed, seed)
-    if _blocks_regular(probed, blocks, assigned, realization):
+    suspects = _singular_blocks(probed, blocks, assigned, random_realization(probed, seed))
+    if suspects:
+        # a generic dependency persists at another random pose; a near-coincidence does not
+        suspects = _singular_blocks(
+            probed, blocks, assigned, random_realization(probed, seed + 1), suspects
+        )
+    if not suspects:
         n_pairs = system.n_pair_rows
         rank = sum(len(a) for a in matcher.assigned[:n_pairs])
         return RankAnalysis(

@@ -45,6 +45,7 @@ __all__ = [
     "jacobian",
     "random_realization",
     "row_entries",
+    "sketch_problems",
     "sketch_realization",
 ]
 
@@ -267,11 +268,33 @@ def random_realization(system: ConstraintSystem, seed: int = 20261121) -> Realiz
 
 
 class MissingGeometry(Exception):
-    """Raised by :func:`sketch_realization` with the reasons the sketch is incomplete."""
+    """Raised by :func:`sketch_realization` with the reasons the sketch is incomplete.
 
-    def __init__(self, reasons: Sequence[str]):
-        self.reasons = tuple(reasons)
+    ``problems`` holds them with their lines, ``reasons`` as text.
+    """
+
+    def __init__(self, problems: Sequence[EdgeListProblem]):
+        self.problems = tuple(problems)
+        self.reasons = tuple(f"line {p.line_no}: {p.reason}" for p in self.problems)
         super().__init__("; ".join(self.reasons))
+
+
+def sketch_problems(mechanism: Mechanism) -> list[EdgeListProblem]:
+    """What is missing for the sketch to fix the geometry, when some of it is given.
+
+    Empty when no pair's point has coordinates (a purely structural
+    description) or when the sketch is complete.
+    """
+    located = any(
+        p.point is not None and mechanism.coordinates(p.point) is not None for p in mechanism.pairs
+    )
+    if not located:
+        return []
+    try:
+        sketch_realization(constraint_system(mechanism))
+    except MissingGeometry as exc:
+        return list(exc.problems)
+    return []
 
 
 def _contact_normal(mechanism: Mechanism, pair_id: int) -> tuple[float, float] | None:
@@ -302,7 +325,7 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
     rank). Raises :class:`MissingGeometry` naming what is missing.
     """
     m = system.mechanism
-    missing: list[str] = []
+    missing: list[EdgeListProblem] = []
     points: list[tuple[float, float] | None] = []
     dirs: list[tuple[float, float] | None] = []
     for r, kind in enumerate(system.row_kind):
@@ -317,30 +340,44 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
             continue
         pair = m.pair(system.row_pair[r])
         if pair.point is None:
-            missing.append(f"pair {pair.label} (line {pair.line_no}) names no point")
+            missing.append(
+                EdgeListProblem(
+                    pair.line_no, pair.label, "the pair names no point, but the sketch is used"
+                )
+            )
         elif m.coordinates(pair.point) is None:
             missing.append(
-                f"point {pair.point} (pair {pair.label}, line {pair.line_no}) has no coordinates"
+                EdgeListProblem(
+                    pair.line_no,
+                    pair.label,
+                    f"point {pair.point} has no coordinates (other points are given, "
+                    "so the sketch is used)",
+                )
             )
         else:
             point = m.coordinates(pair.point)
         if kind in (RowKind.SLIDE, RowKind.SLIDE_ANGLE):
             if pair.angle is None:
                 if kind is RowKind.SLIDE:
-                    missing.append(f"P pair {pair.label} (line {pair.line_no}) has no angle=")
+                    missing.append(
+                        EdgeListProblem(pair.line_no, pair.label, "P pair needs angle= in a sketch")
+                    )
             else:
                 direction = (math.cos(pair.angle), math.sin(pair.angle))
         elif kind is RowKind.CONTACT:
             direction = _contact_normal(m, pair.id)
             if direction is None:
                 missing.append(
-                    f"H pair {pair.label} (line {pair.line_no}) needs centers= with coordinates "
-                    "or normal= to fix its contact normal"
+                    EdgeListProblem(
+                        pair.line_no,
+                        pair.label,
+                        "H pair needs centers= with coordinates or normal= to fix its normal",
+                    )
                 )
         points.append(point)
         dirs.append(direction)
     if missing:
-        raise MissingGeometry(missing)
+        raise MissingGeometry(list(dict.fromkeys(missing)))
     origin = dict.fromkeys(m.links, (0.0, 0.0))
     return Realization(origin, tuple(points), tuple(dirs))
 

@@ -20,8 +20,8 @@ from typing import Any
 import networkx as nx
 
 from .assur import AssurGroup, Decomposition, decompose, driver_candidates, roman
-from .constraints import constraint_system
-from .errors import DecompositionError, MobilityError
+from .constraints import constraint_system, sketch_problems
+from .errors import DecompositionError, EdgeListError, MobilityError
 from .mobility import Mobility, mobility_analysis
 from .model import Mechanism
 from .rank import generic_rank
@@ -106,6 +106,9 @@ def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Struc
 
     Raises
     ------
+    EdgeListError
+        Coordinates given for some pairs but missing for others (or a P pair
+        without ``angle=``, an H pair without a normal) in a sketch.
     MobilityError
         W <= 0, W different from the number of drivers, or a driver whose
         motion is already fixed; the error carries the computed ``mobility``.
@@ -114,6 +117,9 @@ def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Struc
     """
     if drivers is not None:
         mechanism = mechanism.with_drivers(drivers)
+    missing = sketch_problems(mechanism)
+    if missing:
+        raise EdgeListError(mechanism.source, missing)
     mob, generic, geometric = mobility_analysis(mechanism)
     replaced, replacements = replace_higher_pairs(mechanism)
     w = mob.W

@@ -80,7 +80,11 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         if not tokens:
             continue
         head = tokens[0]
-        if head in _KEYWORDS and not (len(tokens) >= 3 and tokens[2] in ("R", "P", "H")):
+        # a statement word followed by a pair kind is a pair whose first link has that
+        # name (no statement has R, P or H third); a `name` line is always a title
+        if head == "name" or (
+            head in _KEYWORDS and not (len(tokens) >= 3 and tokens[2] in ("R", "P", "H"))
+        ):
             if head == "name":
                 name = text.strip()[4:].strip()
             elif head == "ground":
@@ -122,7 +126,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
     mechanism = Mechanism(
         tuple(pairs), ground if ground is not None else "0", tuple(drivers), points, name, source
     )
-    return validated(mechanism)
+    return validated(mechanism, ground_line=ground_line)
 
 
 def _driver(tokens: list[str], line_no: int) -> tuple[Driver | None, str]:
@@ -171,8 +175,8 @@ def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
     path = Path(path)
     try:
         if path.suffix.lower() == ".json":
-            return mechanism_from_json(path.read_text(encoding="utf-8"), source=str(path))
-        with path.open(encoding="utf-8") as handle:
+            return mechanism_from_json(path.read_text(encoding="utf-8-sig"), source=str(path))
+        with path.open(encoding="utf-8-sig") as handle:
             return parse_edgelist(handle, source=str(path))
     except OSError as exc:
         raise EdgeListError(
@@ -182,27 +186,9 @@ def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
         raise EdgeListError(str(path), [EdgeListProblem(0, "", "not a UTF-8 text file")]) from exc
 
 
-def _fmt(value: float) -> str:
-    text = repr(float(value))
-    return text[:-2] if text.endswith(".0") else text
-
-
 def pair_tokens(pair: Pair) -> list[str]:
     """The tokens of ``pair``'s edge-list line."""
-    tokens = [pair.a, pair.b, pair.kind.value]
-    if pair.point is not None:
-        tokens.append(pair.point)
-    if pair.angle_deg is not None:
-        tokens.append(f"angle={_fmt(pair.angle_deg)}")
-    if pair.flat is not None:
-        tokens.append(f"flat={pair.flat}")
-    if pair.roller is not None:
-        tokens.append(f"roller={pair.roller}")
-    if pair.centers is not None:
-        tokens.append("centers=" + ",".join(c or "" for c in pair.centers))
-    if pair.normal_deg is not None:
-        tokens.append(f"normal={_fmt(pair.normal_deg)}")
-    return tokens
+    return pair.statement.split()
 
 
 def write_edgelist(mechanism: Mechanism) -> str:
@@ -211,10 +197,7 @@ def write_edgelist(mechanism: Mechanism) -> str:
     if mechanism.name:
         out.append(f"name {mechanism.name}")
     out.append(f"ground {mechanism.ground}")
-    for d in mechanism.drivers:
-        out.append(" ".join(["driver", d.link, *(f"{k}={_fmt(v)}" for k, v in d.motion)]))
-    out.extend(" ".join(pair_tokens(p)) for p in mechanism.pairs)
-    for p in mechanism.points.values():
-        on = f" on={p.on}" if p.on is not None else ""
-        out.append(f"point {p.name} {_fmt(p.x)} {_fmt(p.y)}{on}")
+    out.extend(d.statement for d in mechanism.drivers)
+    out.extend(p.statement for p in mechanism.pairs)
+    out.extend(p.statement for p in mechanism.points.values())
     return "\n".join(out) + "\n"

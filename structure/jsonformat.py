@@ -41,11 +41,26 @@ def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
     try:
         data = json.loads(text)
     except json.JSONDecodeError as exc:
-        line = text.splitlines()[exc.lineno - 1] if text.splitlines() else ""
+        lines = text.splitlines()
+        line = lines[exc.lineno - 1] if 0 < exc.lineno <= len(lines) else ""
         raise EdgeListError(
             source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")]
         ) from None
     return mechanism_from_dict(data, source)
+
+
+def _is_name(value: Any) -> bool:
+    if isinstance(value, bool):
+        return False
+    return isinstance(value, (str, int)) or (isinstance(value, float) and value.is_integer())
+
+
+def _is_number(value: Any) -> bool:
+    return (
+        isinstance(value, (int, float))
+        and not isinstance(value, bool)
+        and math.isfinite(float(value))
+    )
 
 
 def _text(value: Any) -> str:
@@ -55,7 +70,11 @@ def _text(value: Any) -> str:
 
 
 def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
-    """Build a validated mechanism from the JSON-shaped dict."""
+    """Build a validated mechanism from the JSON-shaped dict.
+
+    Link and point names are strings (integers are accepted and turned into
+    strings); numbers must be finite.
+    """
     problems: list[EdgeListProblem] = []
 
     def bad(where: str, reason: str) -> None:
@@ -66,85 +85,124 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
     unknown = set(data) - {"name", "ground", "drivers", "pairs", "points"}
     if unknown:
         bad("top level", f"unknown keys {sorted(unknown)}")
+    name = data.get("name", "")
+    if not isinstance(name, str):
+        bad("name", "must be a string")
+        name = ""
+    ground = data.get("ground", "0")
+    if not _is_name(ground):
+        bad("ground", "must be a link name")
+        ground = "0"
     pairs: list[Pair] = []
     raw_pairs = data.get("pairs", [])
     if not isinstance(raw_pairs, list):
         bad("pairs", "must be a list")
         raw_pairs = []
-    for i, item in enumerate(raw_pairs, start=1):
-        where = f"pairs[{i - 1}]"
+    for i, item in enumerate(raw_pairs):
+        where = f"pairs[{i}]"
         if not isinstance(item, dict):
             bad(where, "must be an object")
             continue
         extra = set(item) - set(_PAIR_FIELDS)
-        links = item.get("links")
         if extra:
             bad(where, f"unknown keys {sorted(extra)}")
             continue
-        if not isinstance(links, list) or len(links) != 2:
+        links = item.get("links")
+        if not isinstance(links, list) or len(links) != 2 or not all(map(_is_name, links)):
             bad(where, "'links' must be a list of two link names")
             continue
-        tokens = [_text(links[0]), _text(links[1]), str(item.get("kind", ""))]
+        kind = item.get("kind")
+        if not isinstance(kind, str):
+            bad(where, "'kind' must be one of R, P, H")
+            continue
+        tokens = [_text(links[0]), _text(links[1]), kind]
         if item.get("point") is not None:
+            if not _is_name(item["point"]):
+                bad(where, "'point' must be a point name")
+                continue
             tokens.append(_text(item["point"]))
-        for key in ("angle", "flat", "roller", "normal"):
+        shape_ok = True
+        for key in ("angle", "normal"):
             if item.get(key) is not None:
-                tokens.append(f"{key}={_text(item[key])}")
+                if not _is_number(item[key]):
+                    bad(where, f"'{key}' must be a finite number of degrees")
+                    shape_ok = False
+                else:
+                    tokens.append(f"{key}={item[key]!r}")
+        for key in ("flat", "roller"):
+            if item.get(key) is not None:
+                if not _is_name(item[key]):
+                    bad(where, f"'{key}' must be a link name")
+                    shape_ok = False
+                else:
+                    tokens.append(f"{key}={_text(item[key])}")
         if item.get("centers") is not None:
             c = item["centers"]
-            if not isinstance(c, list) or len(c) != 2:
+            if (
+                not isinstance(c, list)
+                or len(c) != 2
+                or not all(v is None or _is_name(v) for v in c)
+            ):
                 bad(where, "'centers' must be a list of two point names (or null)")
-                continue
-            tokens.append("centers=" + ",".join("" if v is None else _text(v) for v in c))
+                shape_ok = False
+            else:
+                tokens.append("centers=" + ",".join("" if v is None else _text(v) for v in c))
+        if not shape_ok:
+            continue
         pair, why = pair_from_tokens(tokens, len(pairs) + 1, 0)
         if pair is None:
             bad(where, why)
         else:
             pairs.append(pair)
     drivers: list[Driver] = []
-    for i, item in enumerate(data.get("drivers", []) or []):
-        if isinstance(item, (str, int)):
+    raw_drivers = data.get("drivers", [])
+    if not isinstance(raw_drivers, list):
+        bad("drivers", "must be a list of link names or objects with 'link'")
+        raw_drivers = []
+    for i, item in enumerate(raw_drivers):
+        where = f"drivers[{i}]"
+        if _is_name(item):
             drivers.append(Driver(_text(item)))
-        elif isinstance(item, dict) and "link" in item:
+        elif isinstance(item, dict) and _is_name(item.get("link")):
             motion = []
             for key, value in item.items():
                 if key == "link":
                     continue
-                if key not in DRIVER_KEYS or not isinstance(value, (int, float)):
-                    bad(f"drivers[{i}]", f"bad option {key!r}")
+                if key not in DRIVER_KEYS:
+                    bad(where, f"unknown option {key!r} (use {', '.join(DRIVER_KEYS)})")
+                elif not _is_number(value):
+                    bad(where, f"option {key!r} must be a finite number")
                 else:
                     motion.append((key, float(value)))
             drivers.append(Driver(_text(item["link"]), tuple(motion)))
         else:
-            bad(f"drivers[{i}]", "must be a link name or an object with 'link'")
+            bad(where, "must be a link name or an object with 'link'")
     points: dict[str, PointDef] = {}
-    raw_points = data.get("points", {}) or {}
+    raw_points = data.get("points", {})
     if not isinstance(raw_points, dict):
         bad("points", "must be an object NAME: [x, y]")
         raw_points = {}
     for key, value in raw_points.items():
+        where = f"points[{key!r}]"
         on = None
         if isinstance(value, dict):
+            extra = set(value) - {"xy", "on"}
+            if extra:
+                bad(where, f"unknown keys {sorted(extra)}")
+                continue
             on = value.get("on")
+            if on is not None and not _is_name(on):
+                bad(where, "'on' must be a link name")
+                continue
+            on = None if on is None else _text(on)
             value = value.get("xy")
-        if (
-            not isinstance(value, list)
-            or len(value) != 2
-            or not all(isinstance(v, (int, float)) and math.isfinite(v) for v in value)
-        ):
-            bad(f"points[{key!r}]", "must be [x, y] with finite numbers")
+        if not isinstance(value, list) or len(value) != 2 or not all(map(_is_number, value)):
+            bad(where, "must be [x, y] with finite numbers")
             continue
         points[str(key)] = PointDef(str(key), float(value[0]), float(value[1]), on)
     if problems:
         raise EdgeListError(source, problems)
-    mechanism = Mechanism(
-        tuple(pairs),
-        _text(data.get("ground", "0")),
-        tuple(drivers),
-        points,
-        str(data.get("name", "")),
-        source,
-    )
+    mechanism = Mechanism(tuple(pairs), _text(ground), tuple(drivers), points, name, source)
     return validated(mechanism)
 
 

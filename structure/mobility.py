@@ -114,18 +114,26 @@ def _geometric(
     if not m.points:
         return None, (), None
     if system.n_scalar_unknowns > DENSE_LIMIT:
-        return None, (
-            f"the geometric check is limited to {DENSE_LIMIT} scalar unknowns "
-            f"({system.n_scalar_unknowns} here); only the structural count was used",
-        ), None
+        return (
+            None,
+            (
+                f"the geometric check is limited to {DENSE_LIMIT} scalar unknowns "
+                f"({system.n_scalar_unknowns} here); only the structural count was used",
+            ),
+            None,
+        )
     try:
         realization = sketch_realization(system)
     except MissingGeometry as exc:
-        return None, (
-            "coordinates are incomplete, so the geometric check was skipped: "
-            + "; ".join(exc.reasons[:3])
-            + ("; ..." if len(exc.reasons) > 3 else ""),
-        ), None
+        return (
+            None,
+            (
+                "coordinates are incomplete, so the geometric check was skipped: "
+                + "; ".join(exc.reasons[:3])
+                + ("; ..." if len(exc.reasons) > 3 else ""),
+            ),
+            None,
+        )
     return geometric_rank(system, realization), (), realization
 
 

@@ -45,6 +45,12 @@ __all__ = [
 DRIVER_KEYS = ("omega", "epsilon", "v", "a")
 
 
+def number_text(value: float) -> str:
+    """Shortest text that reads back as the same float (``'0'`` for 0.0)."""
+    text = repr(float(value))
+    return text[:-2] if text.endswith(".0") else text
+
+
 class PairKind(Enum):
     """Kind of a kinematic pair.
 
@@ -103,7 +109,7 @@ class Pair:
     roller: str | None = None
     centers: tuple[str | None, str | None] | None = None
     normal_deg: float | None = None
-    line_no: int = 0
+    line_no: int = field(default=0, compare=False)
 
     @property
     def angle(self) -> float | None:
@@ -125,8 +131,26 @@ class Pair:
 
     @property
     def label(self) -> str:
-        """Short human label, e.g. ``'1–2 R B'``."""
+        """Short human statement, e.g. ``'1–2 R B'``."""
         return f"{self.a}–{self.b} {self.kind.value}" + (f" {self.point}" if self.point else "")
+
+    @property
+    def statement(self) -> str:
+        """The pair's canonical edge-list line, e.g. ``'3 0 P C angle=30'``."""
+        tokens = [self.a, self.b, self.kind.value]
+        if self.point is not None:
+            tokens.append(self.point)
+        if self.angle_deg is not None:
+            tokens.append(f"angle={number_text(self.angle_deg)}")
+        if self.flat is not None:
+            tokens.append(f"flat={self.flat}")
+        if self.roller is not None:
+            tokens.append(f"roller={self.roller}")
+        if self.centers is not None:
+            tokens.append("centers=" + ",".join(c or "" for c in self.centers))
+        if self.normal_deg is not None:
+            tokens.append(f"normal={number_text(self.normal_deg)}")
+        return " ".join(tokens)
 
     def center_of(self, link: str) -> str | None:
         """Centre of curvature of ``link``'s profile at this higher pair."""
@@ -150,7 +174,13 @@ class PointDef:
     x: float
     y: float
     on: str | None = None
-    line_no: int = 0
+    line_no: int = field(default=0, compare=False)
+
+    @property
+    def statement(self) -> str:
+        """The canonical ``point`` line."""
+        on = f" on={self.on}" if self.on is not None else ""
+        return f"point {self.name} {number_text(self.x)} {number_text(self.y)}{on}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -159,7 +189,12 @@ class Driver:
 
     link: str
     motion: tuple[tuple[str, float], ...] = ()
-    line_no: int = 0
+    line_no: int = field(default=0, compare=False)
+
+    @property
+    def statement(self) -> str:
+        """The canonical ``driver`` line."""
+        return " ".join(["driver", self.link, *(f"{k}={number_text(v)}" for k, v in self.motion)])
 
 
 @dataclass(frozen=True, slots=True)
@@ -290,7 +325,7 @@ class Mechanism:
     def with_drivers(self, drivers: Iterable[str]) -> Mechanism:
         """The same mechanism with another choice of driving links."""
         old = {d.link: d for d in self.drivers}
-        return self.evolve(drivers=tuple(old.get(d, Driver(d)) for d in drivers))
+        return validated(self.evolve(drivers=tuple(old.get(d, Driver(d)) for d in drivers)))
 
     # ---------------------------------------------------------------- queries
     @property
@@ -416,7 +451,7 @@ def _hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:
     return tuple(out)
 
 
-def validated(m: Mechanism) -> Mechanism:
+def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
     """Check a mechanism's topology; raise one EdgeListError listing every problem.
 
     Checks: at least one pair; no pair from a link to itself; compound hinges
@@ -429,15 +464,24 @@ def validated(m: Mechanism) -> Mechanism:
     def bad(line_no: int, reason: str, line: str = "") -> None:
         problems.append(EdgeListProblem(line_no, line, reason))
 
+    first_of: dict[str, Pair] = {}
+    for p in m.pairs:
+        first_of.setdefault(p.a, p)
+        first_of.setdefault(p.b, p)
+
     if not m.pairs:
         bad(0, "no kinematic pairs: the description is empty")
         raise EdgeListError(m.source, problems)
     for p in m.pairs:
         for role, link in (("flat", p.flat), ("roller", p.roller)):
             if link is not None and link not in (p.a, p.b):
-                bad(p.line_no, f"{role}={link} is not one of the pair's links {p.a}, {p.b}")
+                bad(
+                    p.line_no,
+                    f"{role}={link} is not one of the pair's links {p.a}, {p.b}",
+                    p.statement,
+                )
         if p.flat is not None and p.roller is not None and p.flat == p.roller:
-            bad(p.line_no, f"link {p.flat} cannot be both flat and the roller")
+            bad(p.line_no, f"link {p.flat} cannot be both flat and the roller", p.statement)
     for h in m.hinges:
         if len(h.pairs) < 2:
             continue
@@ -447,41 +491,56 @@ def validated(m: Mechanism) -> Mechanism:
         first = m.pair(h.pairs[0])
         if not nx.is_connected(ug):
             parts = " | ".join(",".join(sorted(c)) for c in nx.connected_components(ug))
-            bad(first.line_no, f"the pairs at point {h.point} do not connect its links ({parts})")
+            bad(
+                first.line_no,
+                f"the pairs at point {h.point} do not connect its links ({parts})",
+                first.statement,
+            )
         elif ug.number_of_edges() != len(h.links) - 1:
             cyc = m.pair(h.pairs[-1])
             bad(
                 cyc.line_no,
                 f"the pairs at point {h.point} close a cycle: a hinge of {len(h.links)} "
                 f"links has {len(h.links) - 1} pairs, {ug.number_of_edges()} are listed",
-                cyc.label,
+                cyc.statement,
             )
     if m.ground not in m.graph or m.graph.degree(m.ground) == 0:
-        bad(0, f"the ground {m.ground} is joined to no link")
+        bad(ground_line, f"the ground {m.ground} is joined to no link", f"ground {m.ground}")
     else:
         reach = nx.node_connected_component(m.graph, m.ground)
         loose = [link for link in m.links if link not in reach]
         if loose:
-            bad(0, f"link(s) not connected to the ground {m.ground}: {', '.join(loose)}")
+            first = min((first_of[x] for x in loose), key=lambda p: p.id)
+            bad(
+                first.line_no,
+                f"link(s) not connected to the ground {m.ground}: {', '.join(loose)}",
+                first.statement,
+            )
     seen_drivers: set[str] = set()
     for d in m.drivers:
         if d.link in seen_drivers:
-            bad(d.line_no, f"driver {d.link} is named twice")
+            bad(d.line_no, f"driver {d.link} is named twice", d.statement)
         seen_drivers.add(d.link)
         if d.link == m.ground:
-            bad(d.line_no, f"the ground {d.link} cannot be a driver")
+            bad(d.line_no, f"the ground {d.link} cannot be a driver", d.statement)
         elif d.link not in m.graph:
-            bad(d.line_no, f"driver {d.link} is not a link of the mechanism")
+            bad(d.line_no, f"driver {d.link} is not a link of the mechanism", d.statement)
         elif not m.graph.has_edge(d.link, m.ground):
-            bad(d.line_no, f"driver {d.link} is not joined to the ground {m.ground}")
+            bad(
+                d.line_no,
+                f"driver {d.link} is not joined to the ground {m.ground}",
+                d.statement,
+            )
         for key, _ in d.motion:
             if key not in DRIVER_KEYS:
                 bad(d.line_no, f"unknown driver option {key!r} (use {', '.join(DRIVER_KEYS)})")
     for p in m.points.values():
         if not (math.isfinite(p.x) and math.isfinite(p.y)):
-            bad(p.line_no, f"point {p.name} has non-finite coordinates")
+            bad(p.line_no, f"point {p.name} has non-finite coordinates", p.statement)
         if p.on is not None and p.on not in m.graph:
-            bad(p.line_no, f"point {p.name} is fixed to unknown link {p.on}")
+            bad(p.line_no, f"point {p.name} is fixed to unknown link {p.on}", p.statement)
     if problems:
+        # file order; problems of the whole file (line 0) last
+        problems.sort(key=lambda q: (q.line_no == 0, q.line_no))
         raise EdgeListError(m.source, problems)
     return m

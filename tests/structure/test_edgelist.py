@@ -39,9 +39,15 @@ BAD_INPUT = [
     pytest.param(["0 1 R A", "1 2 r B", *FOURBAR[2:]], 2, "'r'", id="lowercase-kind"),
     pytest.param(["0 1 R A", "1 2", *FOURBAR[2:]], 2, "KIND", id="missing-kind"),
     pytest.param(["0 1 R A", "1", *FOURBAR[1:]], 2, "KIND", id="one-token"),
-    pytest.param(["0 1 R A", "1 2 R B", "2 3 P C angle=abc", "3 0 R D"], 3, "angle", id="angle-abc"),
-    pytest.param(["0 1 R A", "1 2 R B", "2 3 P C angle=inf", "3 0 R D"], 3, "angle", id="angle-inf"),
-    pytest.param(["0 1 R A", "1 2 R B", "2 3 P C angle=nan", "3 0 R D"], 3, "angle", id="angle-nan"),
+    pytest.param(
+        ["0 1 R A", "1 2 R B", "2 3 P C angle=abc", "3 0 R D"], 3, "angle", id="angle-abc"
+    ),
+    pytest.param(
+        ["0 1 R A", "1 2 R B", "2 3 P C angle=inf", "3 0 R D"], 3, "angle", id="angle-inf"
+    ),
+    pytest.param(
+        ["0 1 R A", "1 2 R B", "2 3 P C angle=nan", "3 0 R D"], 3, "angle", id="angle-nan"
+    ),
     pytest.param(["0 1 R A", "1 2 R B", "2 3 P C foo=1", "3 0 R D"], 3, "'foo'", id="unknown-key"),
     pytest.param(["0 1 R A", "1 2 R B angle=30", *FOURBAR[2:]], 2, "'angle'", id="angle-on-R"),
     pytest.param(["0 1 R A", "1 2 P B flat=2", *FOURBAR[2:]], 2, "'flat'", id="flat-on-P"),
@@ -81,12 +87,8 @@ BAD_INPUT = [
     pytest.param(
         ["0 1 R A", "1 2 R B", "2 3 R B", "3 1 R B", "3 0 R D"], 4, "cycle", id="hinge-cycle"
     ),
-    pytest.param(
-        ["0 1 R A", "1 2 R B", "3 4 R B", "2 3 R C", "4 0 R D"], 2, "B", id="hinge-split"
-    ),
-    pytest.param(
-        ["0 1 R A", "1 2 R B", "1 2 R B", "2 0 R C"], 3, "cycle", id="hinge-double-pair"
-    ),
+    pytest.param(["0 1 R A", "1 2 R B", "3 4 R B", "2 3 R C", "4 0 R D"], 2, "B", id="hinge-split"),
+    pytest.param(["0 1 R A", "1 2 R B", "1 2 R B", "2 0 R C"], 3, "cycle", id="hinge-double-pair"),
     pytest.param(["0 1 R A", "1 2 H K flat=3", "2 0 R C"], 2, "flat=3", id="flat-not-own"),
     pytest.param(["0 1 R A", "1 2 H K roller=0", "2 0 R C"], 2, "roller=0", id="roller-not-own"),
     pytest.param(
@@ -156,8 +158,18 @@ def test_description_without_pairs_is_rejected(lines):
     [
         pytest.param(["0 1 R A", "1 2 Q B", "2 3 R C", "3 0 X D"], [2, 4], id="two-bad-pairs"),
         pytest.param(
-            ["ground 0", "0 1 R A", "ground 1", "1 2", "point A 0", "2 3 R C", "3 0 R D",
-             "driver 1 speed=1", "point B 1 1", "point B 2 2"],
+            [
+                "ground 0",
+                "0 1 R A",
+                "ground 1",
+                "1 2",
+                "point A 0",
+                "2 3 R C",
+                "3 0 R D",
+                "driver 1 speed=1",
+                "point B 1 1",
+                "point B 2 2",
+            ],
             [3, 4, 5, 8, 10],
             id="every-statement-kind",
         ),
@@ -326,10 +338,20 @@ def test_primed_link_names():
     assert m.pairs[1].links == ("1", "2'")
 
 
-def test_keywords_may_name_links_in_a_pair():
-    m = parse_edgelist(["0 point R A", "point name R B", "name 0 R C"])
-    assert m.moving_links == ("point", "name")
-    assert [p.kind for p in m.pairs] == [PairKind.R] * 3
+def test_statement_words_may_name_links_in_a_pair():
+    # a point, driver or ground statement never has R, P or H as its third word,
+    # so such a line is a pair; ``name`` is left out: its line is a free title
+    m = parse_edgelist(["0 point R A", "point driver R B", "driver ground P", "ground 0 R C"])
+    assert m.moving_links == ("point", "driver", "ground")
+    assert [p.kind for p in m.pairs] == [PairKind.R, PairKind.R, PairKind.P, PairKind.R]
+    assert m.ground == "0"
+    assert m.drivers == ()
+
+
+def test_title_with_a_pair_kind_word_is_a_title():
+    m = parse_edgelist(["name Type R linkage", *FOURBAR])
+    assert m.name == "Type R linkage"
+    assert len(m.pairs) == 4
 
 
 def test_title_with_a_pair_kind_word_survives_writing():
@@ -511,7 +533,8 @@ point M 0.1 0.2 on=3
 
 # ------------------------------------------------------------------ property test
 NAME_CHARS = string.ascii_letters + string.digits + "_'"
-names = st.text(NAME_CHARS, min_size=1, max_size=4)
+# a link called "name" cannot start a pair line: that line is a title
+names = st.text(NAME_CHARS, min_size=1, max_size=4).filter(lambda s: s != "name")
 finite = st.floats(allow_nan=False, allow_infinity=False)
 
 
@@ -525,8 +548,17 @@ def descriptions(draw):
 
     def add_pair(a: str, b: str) -> None:
         kind = draw(st.sampled_from("RPH"))
-        spec = {"a": a, "b": b, "kind": kind, "point": None, "angle": None, "flat": None,
-                "roller": None, "centers": None, "normal": None}
+        spec = {
+            "a": a,
+            "b": b,
+            "kind": kind,
+            "point": None,
+            "angle": None,
+            "flat": None,
+            "roller": None,
+            "centers": None,
+            "normal": None,
+        }
         if kind == "R":
             shareable = sorted(p for p, ls in hinges.items() if (a in ls) != (b in ls))
             how = draw(st.sampled_from(["none", "new", "share"]))
@@ -542,8 +574,9 @@ def descriptions(draw):
             spec["angle"] = draw(st.none() | finite)
         if kind == "H":
             spec["flat"] = draw(st.sampled_from([None, a, b]))
-            spec["roller"] = draw(st.sampled_from([x for x in (None, a, b) if x != spec["flat"]
-                                                    or x is None]))
+            spec["roller"] = draw(
+                st.sampled_from([x for x in (None, a, b) if x != spec["flat"] or x is None])
+            )
             centers = draw(st.none() | st.tuples(st.none() | names, st.none() | names))
             spec["centers"] = None if centers == (None, None) else centers
             spec["normal"] = draw(st.none() | finite)
@@ -556,16 +589,26 @@ def descriptions(draw):
         a, b = draw(st.lists(st.sampled_from(links), min_size=2, max_size=2, unique=True))
         add_pair(a, b)
 
-    on_ground = sorted({p["a"] if p["b"] == ground else p["b"]
-                        for p in pairs if ground in (p["a"], p["b"])})
+    on_ground = sorted(
+        {p["a"] if p["b"] == ground else p["b"] for p in pairs if ground in (p["a"], p["b"])}
+    )
     drivers = {
-        link: tuple(draw(st.lists(st.tuples(st.sampled_from(DRIVER_KEYS), finite),
-                                  max_size=4, unique_by=lambda kv: kv[0])))
+        link: tuple(
+            draw(
+                st.lists(
+                    st.tuples(st.sampled_from(DRIVER_KEYS), finite),
+                    max_size=4,
+                    unique_by=lambda kv: kv[0],
+                )
+            )
+        )
         for link in draw(st.lists(st.sampled_from(on_ground), max_size=3, unique=True))
     }
-    points = draw(st.dictionaries(names, st.tuples(finite, finite,
-                                                   st.none() | st.sampled_from(links)),
-                                  max_size=5))
+    points = draw(
+        st.dictionaries(
+            names, st.tuples(finite, finite, st.none() | st.sampled_from(links)), max_size=5
+        )
+    )
     words = st.text(string.ascii_letters + string.digits + "-", min_size=2, max_size=6)
     title = " ".join(draw(st.lists(words, max_size=4)))
 
@@ -603,8 +646,13 @@ def descriptions(draw):
         if draw(st.booleans()):
             decorated.append(draw(st.sampled_from(["", "# comment", "   "])))
         decorated.append(line + draw(st.sampled_from(["", "  # note", "\t"])))
-    expected = {"ground": ground, "name": title, "pairs": pairs, "drivers": drivers,
-                "points": points}
+    expected = {
+        "ground": ground,
+        "name": title,
+        "pairs": pairs,
+        "drivers": drivers,
+        "points": points,
+    }
     return decorated, expected
 
 
@@ -612,8 +660,17 @@ def _check_parsed(m: Mechanism, expected: dict) -> None:
     assert m.ground == expected["ground"]
     assert m.name == expected["name"]
     got = [
-        {"a": p.a, "b": p.b, "kind": p.kind.value, "point": p.point, "angle": p.angle_deg,
-         "flat": p.flat, "roller": p.roller, "centers": p.centers, "normal": p.normal_deg}
+        {
+            "a": p.a,
+            "b": p.b,
+            "kind": p.kind.value,
+            "point": p.point,
+            "angle": p.angle_deg,
+            "flat": p.flat,
+            "roller": p.roller,
+            "centers": p.centers,
+            "normal": p.normal_deg,
+        }
         for p in m.pairs
     ]
     assert got == expected["pairs"]

@@ -1,0 +1,337 @@
+"""Tests of the JSON form of the mechanism model (structure.jsonformat)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from structure.errors import EdgeListError, MechanismError
+from structure.jsonformat import (
+    mechanism_from_dict,
+    mechanism_from_json,
+    mechanism_to_dict,
+    mechanism_to_json,
+)
+from structure.model import Driver, Mechanism, PairKind, PointDef
+
+FOURBAR_PAIRS = [
+    {"links": ["0", "1"], "kind": "R", "point": "A"},
+    {"links": ["1", "2"], "kind": "R", "point": "B"},
+    {"links": ["2", "3"], "kind": "R", "point": "C"},
+    {"links": ["3", "0"], "kind": "R", "point": "D"},
+]
+
+
+def _fourbar(**extra) -> dict:
+    return {"pairs": [dict(p) for p in FOURBAR_PAIRS], **extra}
+
+
+def _error(data, source: str = "t.json") -> EdgeListError:
+    text = data if isinstance(data, str) else json.dumps(data)
+    with pytest.raises(EdgeListError) as info:
+        mechanism_from_json(text, source)
+    assert isinstance(info.value, MechanismError)
+    assert isinstance(info.value, ValueError)
+    return info.value
+
+
+# ------------------------------------------------------------------ valid input
+def test_json_equals_the_same_mechanism_built_in_python():
+    data = {
+        "name": "cam and slider",
+        "ground": "0",
+        "drivers": [{"link": "1", "omega": 20, "epsilon": 0}],
+        "pairs": [
+            {"links": ["0", "1"], "kind": "R", "point": "O"},
+            {"links": ["0", "2"], "kind": "P", "point": "Q", "angle": 90},
+            {
+                "links": ["1", "2"],
+                "kind": "H",
+                "point": "K",
+                "flat": "2",
+                "centers": ["C1", None],
+                "normal": 90,
+            },
+            {"links": ["1", "3"], "kind": "R", "point": "B"},
+            {"links": ["3", "4"], "kind": "R", "point": "C"},
+            {"links": ["4", "0"], "kind": "P", "point": "C", "angle": 0},
+        ],
+        "points": {"O": [0, 0], "K": [0, 0.05], "M": {"xy": [0.1, 0.2], "on": "3"}},
+    }
+    built = Mechanism.from_pairs(
+        [
+            ("0", "1", "R", "O"),
+            ("0", "2", "P", "Q", {"angle": 90}),
+            ("1", "2", "H", "K", {"flat": "2", "centers": ("C1", None), "normal": 90}),
+            ("1", "3", "R", "B"),
+            ("3", "4", "R", "C"),
+            ("4", "0", "P", "C", {"angle": 0}),
+        ],
+        drivers=[Driver("1", (("omega", 20.0), ("epsilon", 0.0)))],
+        points=[PointDef("O", 0.0, 0.0), PointDef("K", 0.0, 0.05), PointDef("M", 0.1, 0.2, "3")],
+        name="cam and slider",
+        source="cam.json",
+    )
+    assert mechanism_from_json(json.dumps(data), "cam.json") == built
+    assert mechanism_from_dict(data, "cam.json") == built
+
+
+def test_numbers_stand_for_link_names():
+    data = {
+        "ground": 0,
+        "drivers": [1],
+        "pairs": [
+            {"links": [0, 1], "kind": "R"},
+            {"links": [1, 2.0], "kind": "R"},
+            {"links": [2, 0], "kind": "P", "angle": 30},
+        ],
+        "points": {"M": {"xy": [0.5, 0], "on": 2}},
+    }
+    m = mechanism_from_dict(data)
+    assert m.ground == "0"
+    assert m.moving_links == ("1", "2")
+    assert m.driver_links == ("1",)
+    assert m.pairs[2].angle_deg == 30.0
+    assert m.points["M"] == PointDef("M", 0.5, 0.0, "2")
+
+
+def test_minimal_document_gets_the_defaults():
+    m = mechanism_from_json('{"pairs": [{"links": ["0", "1"], "kind": "R"}]}')
+    assert (m.ground, m.name, m.drivers, dict(m.points), m.source) == ("0", "", (), {}, "<json>")
+    assert m.pairs[0].kind is PairKind.R
+    assert m.pairs[0].point is None
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        pytest.param({"ground": "0", "pairs": FOURBAR_PAIRS}, id="plain"),
+        pytest.param(
+            {
+                "name": "four-bar",
+                "ground": "F",
+                "drivers": ["1", {"link": "3", "omega": -2.5}],
+                "pairs": [
+                    {"links": ["F", "1"], "kind": "R", "point": "A"},
+                    {"links": ["1", "2"], "kind": "R", "point": "B"},
+                    {"links": ["2", "3"], "kind": "R", "point": "C"},
+                    {"links": ["3", "F"], "kind": "R", "point": "D"},
+                ],
+                "points": {"A": [0.0, 0.0], "M": {"xy": [0.1, 0.2], "on": "2"}},
+            },
+            id="drivers-and-points",
+        ),
+        pytest.param(
+            {
+                "ground": "0",
+                "pairs": [
+                    {"links": ["0", "1"], "kind": "R", "point": "O1"},
+                    {"links": ["0", "2"], "kind": "R", "point": "O2"},
+                    {
+                        "links": ["1", "2"],
+                        "kind": "H",
+                        "point": "K",
+                        "roller": "2",
+                        "centers": [None, "N2"],
+                        "normal": 20.5,
+                    },
+                ],
+            },
+            id="higher-pair",
+        ),
+        pytest.param(
+            {
+                "ground": "0",
+                "pairs": [
+                    {"links": ["0", "1"], "kind": "R"},
+                    {"links": ["1", "2"], "kind": "R"},
+                    {"links": ["2", "0"], "kind": "P", "angle": -12.25},
+                ],
+            },
+            id="slider",
+        ),
+    ],
+)
+def test_canonical_dict_round_trip(data):
+    m = mechanism_from_dict(data)
+    assert mechanism_to_dict(m) == data
+    assert json.loads(mechanism_to_json(m)) == data
+    assert json.loads(mechanism_to_json(m, indent=None)) == data
+    assert "\n" not in mechanism_to_json(m, indent=None)
+
+
+# ------------------------------------------------------------------ invalid JSON
+@pytest.mark.parametrize(
+    ("text", "line_no"),
+    [
+        pytest.param(
+            '{\n  "pairs": [\n    {"links": ["0", "1"] "kind": "R"}\n  ]\n}', 3, id="missing-comma"
+        ),
+        pytest.param('{"pairs": []\n,,}', 2, id="double-comma"),
+        pytest.param('{"pairs": [1,]}', 1, id="trailing-comma"),
+        pytest.param("", 1, id="empty"),
+        pytest.param("{\n", 2, id="unclosed-object"),
+        pytest.param("\n\n", 3, id="blank-lines"),
+        pytest.param('{"pairs": [\n', 2, id="unclosed-list"),
+    ],
+)
+def test_invalid_json_reports_its_line(text, line_no):
+    error = _error(text)
+    assert len(error.problems) == 1
+    assert error.line_no == line_no
+    assert "invalid JSON" in error.reason
+    assert str(error).startswith(f"t.json: line {line_no}: ")
+
+
+# ------------------------------------------------------------------ unknown keys and shapes
+# (document, a word the reason must contain: where the problem is or what is wrong)
+BAD_DOCUMENTS = [
+    pytest.param(_fourbar(foo=1), "'foo'", id="unknown-top-key"),
+    pytest.param(_fourbar(driver=["1"]), "'driver'", id="misspelt-drivers"),
+    pytest.param(
+        {"pairs": [{**FOURBAR_PAIRS[0], "bar": 2}, *FOURBAR_PAIRS[1:]]},
+        "'bar'",
+        id="unknown-pair-key",
+    ),
+    pytest.param(_fourbar(drivers=[{"link": "1", "speed": 3}]), "'speed'", id="unknown-driver-key"),
+    pytest.param(
+        _fourbar(points={"A": {"xy": [0, 0], "colour": "red"}}), "colour", id="unknown-point-key"
+    ),
+    pytest.param([1, 2], "object", id="top-level-list"),
+    pytest.param("four-bar", "object", id="top-level-string"),
+    pytest.param(None, "object", id="top-level-null"),
+    pytest.param({"pairs": {"0-1": "R"}}, "pairs", id="pairs-object"),
+    pytest.param({"pairs": [*FOURBAR_PAIRS, 7]}, "pairs[4]", id="pair-number"),
+    pytest.param({"pairs": [{"kind": "R"}, *FOURBAR_PAIRS]}, "links", id="links-missing"),
+    pytest.param(
+        {"pairs": [{"links": ["0"], "kind": "R"}, *FOURBAR_PAIRS]}, "links", id="links-one"
+    ),
+    pytest.param(
+        {"pairs": [{"links": ["0", "1", "2"], "kind": "R"}, *FOURBAR_PAIRS]},
+        "links",
+        id="links-three",
+    ),
+    pytest.param(
+        {"pairs": [{"links": "01", "kind": "R"}, *FOURBAR_PAIRS]}, "links", id="links-string"
+    ),
+    pytest.param(
+        {"pairs": [{"links": [["0"], "1"], "kind": "R"}, *FOURBAR_PAIRS[1:]]},
+        "links",
+        id="links-nested-list",
+    ),
+    pytest.param(
+        {"pairs": [{"links": [None, "1"], "kind": "R"}, *FOURBAR_PAIRS[1:]]},
+        "links",
+        id="links-null",
+    ),
+    pytest.param({"pairs": [{"links": ["0", "1"]}, *FOURBAR_PAIRS[1:]]}, "kind", id="kind-missing"),
+    pytest.param(
+        {"pairs": [{"links": ["0", "1"], "kind": "X"}, *FOURBAR_PAIRS[1:]]},
+        "'X'",
+        id="kind-unknown",
+    ),
+    pytest.param(
+        {"pairs": [{"links": ["0", "1"], "kind": "P", "angle": "steep"}, *FOURBAR_PAIRS[1:]]},
+        "angle",
+        id="angle-text",
+    ),
+    pytest.param(
+        {"pairs": [{"links": ["0", "1"], "kind": "R", "angle": 10}, *FOURBAR_PAIRS[1:]]},
+        "'angle'",
+        id="angle-on-R",
+    ),
+    pytest.param(
+        {"pairs": [{"links": ["0", "1"], "kind": "H", "centers": "C1"}, *FOURBAR_PAIRS[1:]]},
+        "centers",
+        id="centers-string",
+    ),
+    pytest.param(
+        {"pairs": [{"links": ["0", "1"], "kind": "H", "centers": ["C1"]}, *FOURBAR_PAIRS[1:]]},
+        "centers",
+        id="centers-one",
+    ),
+    pytest.param(
+        {"pairs": [{"links": ["1", "1"], "kind": "R"}, *FOURBAR_PAIRS]}, "itself", id="self-pair"
+    ),
+    pytest.param(_fourbar(drivers=1), "drivers", id="drivers-number"),
+    pytest.param(_fourbar(drivers="13"), "drivers", id="drivers-string"),
+    pytest.param(_fourbar(drivers={"link": "1"}), "drivers", id="drivers-object"),
+    pytest.param(_fourbar(drivers=[["1"]]), "drivers[0]", id="driver-list"),
+    pytest.param(_fourbar(drivers=[{"omega": 1}]), "drivers[0]", id="driver-without-link"),
+    pytest.param(
+        _fourbar(drivers=[{"link": "1", "omega": "fast"}]), "omega", id="driver-omega-text"
+    ),
+    pytest.param(_fourbar(drivers=[{"link": "1", "omega": True}]), "omega", id="driver-omega-bool"),
+    pytest.param(_fourbar(drivers=["9"]), "9", id="driver-not-a-link"),
+    pytest.param(_fourbar(points=[[0, 0]]), "points", id="points-list"),
+    pytest.param(_fourbar(points={"A": [0]}), "'A'", id="point-one-coordinate"),
+    pytest.param(_fourbar(points={"A": [0, 0, 0]}), "'A'", id="point-three-coordinates"),
+    pytest.param(_fourbar(points={"A": ["0", "0"]}), "'A'", id="point-text-coordinates"),
+    pytest.param(_fourbar(points={"A": [True, False]}), "'A'", id="point-bool-coordinates"),
+    pytest.param(_fourbar(points={"A": {"on": "1"}}), "'A'", id="point-without-xy"),
+    pytest.param(_fourbar(points={"A": {"xy": [0, 0], "on": "9"}}), "9", id="point-on-unknown"),
+    pytest.param(_fourbar(name=["four", "bar"]), "name", id="name-list"),
+    pytest.param(_fourbar(ground=["0"]), "ground", id="ground-list"),
+]
+
+
+@pytest.mark.parametrize(("data", "word"), BAD_DOCUMENTS)
+def test_bad_document_is_one_edgelist_error(data, word):
+    error = _error(json.dumps(data))
+    assert error.source == "t.json"
+    assert any(word in p.reason for p in error.problems), error.problems
+    assert str(error).startswith("t.json: ")
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        pytest.param(
+            '{"pairs": %s, "drivers": [{"link": "1", "omega": NaN}]}',
+            "omega",
+            id="driver-omega-nan",
+        ),
+        pytest.param(
+            '{"pairs": %s, "drivers": [{"link": "1", "omega": Infinity}]}',
+            "omega",
+            id="driver-omega-inf",
+        ),
+        pytest.param('{"pairs": %s, "points": {"A": [NaN, 0]}}', "'A'", id="point-nan"),
+        pytest.param('{"pairs": %s, "points": {"A": [0, -Infinity]}}', "'A'", id="point-inf"),
+        pytest.param(
+            '{"pairs": [{"links": ["0", "1"], "kind": "P", "angle": NaN}]}',
+            "angle",
+            id="angle-nan",
+        ),
+    ],
+)
+def test_non_finite_numbers_are_rejected(text, word):
+    if "%s" in text:
+        text = text % json.dumps(FOURBAR_PAIRS)
+    error = _error(text)
+    assert any(word in p.reason for p in error.problems), error.problems
+
+
+def test_every_problem_of_a_document_is_reported_in_order():
+    data = {
+        "pairs": [
+            {"links": ["0", "1"], "kind": "Q"},
+            {"links": ["1", "2"], "kind": "R"},
+            {"links": ["2"], "kind": "R"},
+            {"links": ["2", "0"], "kind": "R", "colour": "red"},
+        ],
+        "drivers": [{"link": "1", "speed": 2}],
+        "points": {"A": [0]},
+    }
+    error = _error(data)
+    where = [p.reason.split(":")[0] for p in error.problems]
+    assert where == ["pairs[0]", "pairs[2]", "pairs[3]", "drivers[0]", "points['A']"]
+    assert len(str(error).splitlines()) == 5
+
+
+def test_dict_source_names_the_error():
+    with pytest.raises(EdgeListError) as info:
+        mechanism_from_dict({"pairs": 3})
+    assert info.value.source == "<dict>"
+    assert str(info.value).startswith("<dict>: ")

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 
 import networkx as nx
 
-from .constraints import MissingGeometry, constraint_system, sketch_realization
+from .constraints import MissingGeometry, RowKind, constraint_system, sketch_realization
 from .errors import DecompositionError, MobilityError
 from .model import Mechanism, PairKind, validated
 from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
@@ -286,46 +286,111 @@ def _groups_from_blocks(
     removed_links: Sequence[str],
     removed_pairs: Sequence[int],
 ) -> Decomposition:
+    """Assur groups from the irreducible blocks of the driven system.
+
+    A link belongs to the block that completes it. Blocks can be finer than
+    whole pairs allow (in an RPP dyad the guides fix the middle link's angle
+    first), so blocks whose unknowns are fixed by rows of one pair, or whose
+    rows fix one pin, are merged, and so are blocks that end up depending on
+    each other. The group order is a topological order of the dependencies
+    that the rows' other unknowns give.
+    """
     system = analysis.system
     assert analysis.blocks is not None
+    assigned = analysis.assigned
     block_of = [0] * len(system.unknowns)
     for b, units in enumerate(analysis.blocks):
         for u in units:
             block_of[u] = b
-    ground = mechanism.ground
-    done: dict[str, int] = {ground: -1}
-    for link in mechanism.moving_links:
-        done[link] = max(block_of[system.pos[link]], block_of[system.ang[link]])
     driver_set = set(drivers)
-    members: dict[int, list[str]] = {}
+    start: dict[str, int] = {}
     for link in mechanism.moving_links:
         if link not in driver_set:
-            members.setdefault(done[link], []).append(link)
-    members, found = _whole_pair_groups(mechanism, members, done)
-    built = {b: _build_group(links, found[b]) for b, links in members.items()}
-    block_of_link = {link: b for b, links in members.items() for link in links}
-    block_dag = nx.DiGraph()
-    block_dag.add_nodes_from(built)
-    for b, g in built.items():
-        for known in g.known_links:
-            if known in block_of_link:
-                block_dag.add_edge(block_of_link[known], b)
+            start[link] = max(block_of[system.pos[link]], block_of[system.ang[link]])
+    parent = {b: b for b in start.values()}
+
+    def find(b: int) -> int:
+        while parent[b] != b:
+            parent[b] = parent[parent[b]]
+            b = parent[b]
+        return b
+
+    def union(a: int, b: int) -> None:
+        ra, rb = find(a), find(b)
+        if ra != rb:
+            parent[max(ra, rb)] = min(ra, rb)
+
+    # the block each unknown belongs to; a pin follows the link whose row fixes it
+    owner: list[int | None] = [
+        None if unknown.kind == "pin" else start.get(unknown.owner) for unknown in system.unknowns
+    ]
+    for r, units in enumerate(assigned[: system.n_pair_rows]):
+        if system.row_kind[r] is not RowKind.PIN:
+            continue
+        b = start.get(system.row_link[r])
+        for u in units:
+            if system.unknowns[u].kind == "pin" and b is not None:
+                known = owner[u]
+                if known is None:
+                    owner[u] = b
+                else:
+                    union(known, b)
+    # rows of one pair fixing unknowns of different blocks: a pair is never split
+    by_pair: dict[int, set[int]] = {}
+    for r, units in enumerate(assigned[: system.n_pair_rows]):
+        if system.row_kind[r] is RowKind.PIN:
+            continue
+        for u in units:
+            b = owner[u]
+            if b is not None:
+                by_pair.setdefault(system.row_pair[r], set()).add(b)
+    for blocks in by_pair.values():
+        first, *rest = blocks
+        for b in rest:
+            union(first, b)
+    while True:
+        dag = nx.DiGraph()
+        dag.add_nodes_from({find(b) for b in parent})
+        for r, units in enumerate(assigned[: system.n_pair_rows]):
+            if not units or owner[units[0]] is None:
+                continue
+            target = find(owner[units[0]])  # type: ignore[arg-type]
+            for w in system.row_adj[r]:
+                b = owner[w]
+                if b is not None and find(b) != target:
+                    dag.add_edge(find(b), target)
+        cycles = [c for c in nx.strongly_connected_components(dag) if len(c) > 1]
+        if not cycles:
+            break
+        for c in cycles:
+            first, *rest = c
+            for b in rest:
+                union(first, b)
+    members: dict[int, list[str]] = {}
+    for link in mechanism.moving_links:
+        if link in start:
+            members.setdefault(find(start[link]), []).append(link)
     position = {link: i for i, link in enumerate(mechanism.links)}
     order = list(
-        nx.lexicographical_topological_sort(
-            block_dag, key=lambda b: min(position[x] for x in members[b])
-        )
+        nx.lexicographical_topological_sort(dag, key=lambda b: min(position[x] for x in members[b]))
     )
     index = {b: i for i, b in enumerate(order)}
-    groups = tuple(built[b] for b in order)
-    dag = nx.DiGraph()
-    dag.add_nodes_from(range(len(groups)))
-    dag.add_edges_from((index[u], index[v]) for u, v in block_dag.edges)
+    level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
+    for b, links in members.items():
+        for link in links:
+            level[link] = index[b]
+    groups = tuple(
+        _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b]))
+        for b in order
+    )
+    group_dag = nx.DiGraph()
+    group_dag.add_nodes_from(range(len(groups)))
+    group_dag.add_edges_from((index[u], index[v]) for u, v in dag.edges)
     return Decomposition(
         mechanism,
         tuple(drivers),
         groups,
-        nx.freeze(dag),
+        nx.freeze(group_dag),
         tuple(removed_links),
         tuple(removed_pairs),
     )
@@ -334,44 +399,6 @@ def _groups_from_blocks(
 _R = PairKind.R  # enum member lookups are slow in hot loops
 
 _GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]
-
-
-def _whole_pair_groups(
-    mechanism: Mechanism, members: dict[int, list[str]], done: dict[str, int]
-) -> tuple[dict[int, list[str]], dict[int, _GroupPairs]]:
-    """Merge blocks so that every pair lies within one group.
-
-    The fine blocks can split a pair's rows: in an RPP dyad the middle link's
-    angle is known from the guides, so it completes before its partner.
-    A block with fewer constraints than 3 per link is merged into the
-    earliest later block that shares a pair with it, until every group
-    satisfies 3·links = 2·pairs. Returns the groups and their pairs.
-    """
-    members = {b: list(v) for b, v in members.items()}
-    group_of = {link: b for b, links in members.items() for link in links}
-    found: dict[int, _GroupPairs] = {}
-    for b in sorted(members):
-        while b in members:
-            links = members[b]
-            found[b] = _group_pairs(mechanism, links, done, b)
-            if 2 * len(found[b][0]) >= 3 * len(links):
-                break
-            later = [
-                group_of[p.other(x)]
-                for x in links
-                for p in mechanism.pairs_of(x)
-                if p.other(x) in group_of and group_of[p.other(x)] > b
-            ]
-            if not later:
-                break
-            target = min(later)
-            rank = {x: i for i, x in enumerate(mechanism.links)}
-            members[target] = sorted(links + members[target], key=rank.__getitem__)
-            for x in links:
-                group_of[x] = target
-            del members[b]
-            del found[b]
-    return members, found
 
 
 def _build_group(links: list[str], found: _GroupPairs) -> AssurGroup:
@@ -422,7 +449,9 @@ def _group_pairs(
                     joints.append(tuple(inside))
                     middle_letter = "R"
                 if known:
-                    pairs.append(GroupPair(_R, (inside[0], known[0]), h.point, True))
+                    # the pin is fixed by the earliest known link at it (the ground first)
+                    anchor = min(known, key=done.__getitem__)
+                    pairs.append(GroupPair(_R, (inside[0], anchor), h.point, True))
                     external_letter.setdefault(inside[0], "R")
                 continue
             if other in members:

@@ -325,7 +325,7 @@ def _groups_from_blocks(
         None if unknown.kind == "pin" else start.get(unknown.owner) for unknown in system.unknowns
     ]
     for r, units in enumerate(assigned[: system.n_pair_rows]):
-        if system.row_kind[r] is not RowKind.PIN:
+        if system.row_kind[r] is not _PIN:
             continue
         b = start.get(system.row_link[r])
         for u in units:
@@ -338,7 +338,7 @@ def _groups_from_blocks(
     # rows of one pair fixing unknowns of different blocks: a pair is never split
     by_pair: dict[int, set[int]] = {}
     for r, units in enumerate(assigned[: system.n_pair_rows]):
-        if system.row_kind[r] is RowKind.PIN:
+        if system.row_kind[r] is _PIN:
             continue
         for u in units:
             b = owner[u]
@@ -349,16 +349,20 @@ def _groups_from_blocks(
         for b in rest:
             union(first, b)
     while True:
-        dag = nx.DiGraph()
-        dag.add_nodes_from({find(b) for b in parent})
+        edges: set[tuple[int, int]] = set()
         for r, units in enumerate(assigned[: system.n_pair_rows]):
             if not units or owner[units[0]] is None:
                 continue
             target = find(owner[units[0]])  # type: ignore[arg-type]
             for w in system.row_adj[r]:
                 b = owner[w]
-                if b is not None and find(b) != target:
-                    dag.add_edge(find(b), target)
+                if b is not None:
+                    source = find(b)
+                    if source != target:
+                        edges.add((source, target))
+        dag = nx.DiGraph()
+        dag.add_nodes_from({find(b) for b in parent})
+        dag.add_edges_from(edges)
         cycles = [c for c in nx.strongly_connected_components(dag) if len(c) > 1]
         if not cycles:
             break
@@ -397,6 +401,7 @@ def _groups_from_blocks(
 
 
 _R = PairKind.R  # enum member lookups are slow in hot loops
+_PIN = RowKind.PIN
 
 _GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]
 

@@ -60,6 +60,11 @@ class RowKind(Enum):
     PROBE = "probe"  # a coordinate fixed to expose free motion
 
 
+# module-level aliases: enum attribute lookups are slow in the hot loops below
+_HINGE, _PIN, _SLIDE_ANGLE, _SLIDE, _CONTACT, _DRIVER, _PROBE = RowKind
+_R, _P, _H = PairKind
+
+
 @dataclass(frozen=True, slots=True)
 class Unknown:
     """A block of unknowns: ``kind`` is ``'pos'`` (2), ``'ang'`` (1) or ``'pin'`` (2)."""
@@ -165,10 +170,10 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
     compound = mechanism.compound_hinges
     done_points: set[str] = set()
     for p in mechanism.pairs:
-        if p.kind is PairKind.R:
+        if p.kind is _R:
             h = compound.get(p.point) if p.point is not None else None
             if h is None:
-                add(RowKind.HINGE, 2, body(p.b) + body(p.a), p.id)
+                add(_HINGE, 2, body(p.b) + body(p.a), p.id)
                 continue
             if h.point in done_points:
                 continue
@@ -180,18 +185,18 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
             if ground in h.links:
                 for link in h.links:
                     if link != ground:
-                        add(RowKind.PIN, 2, body(link), first_pair[link], link)
+                        add(_PIN, 2, body(link), first_pair[link], link)
             else:
                 pin[h.point] = len(unknowns)
                 unknowns.append(Unknown("pin", h.point, 2))
                 for link in h.links:
-                    add(RowKind.PIN, 2, (pin[h.point], *body(link)), first_pair[link], link)
-        elif p.kind is PairKind.P:
+                    add(_PIN, 2, (pin[h.point], *body(link)), first_pair[link], link)
+        elif p.kind is _P:
             angles = tuple(ang[x] for x in (p.b, p.a) if x != ground)
-            add(RowKind.SLIDE_ANGLE, 1, angles, p.id)
-            add(RowKind.SLIDE, 1, body(p.b) + body(p.a), p.id)
+            add(_SLIDE_ANGLE, 1, angles, p.id)
+            add(_SLIDE, 1, body(p.b) + body(p.a), p.id)
         else:
-            add(RowKind.CONTACT, 1, body(p.b) + body(p.a), p.id)
+            add(_CONTACT, 1, body(p.b) + body(p.a), p.id)
     n_pair_rows = len(kinds)
     system = ConstraintSystem(
         mechanism,
@@ -214,10 +219,10 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
 def _driver_row(system: ConstraintSystem, link: str) -> tuple[RowKind, int, tuple[int, ...], str]:
     m = system.mechanism
     kinds = {p.kind for p in m.pairs_of(link) if p.other(link) == m.ground}
-    if PairKind.R in kinds:
-        return RowKind.DRIVER, 1, (system.ang[link],), link
-    if PairKind.P in kinds:
-        return RowKind.DRIVER, 1, (system.pos[link],), link
+    if _R in kinds:
+        return _DRIVER, 1, (system.ang[link],), link
+    if _P in kinds:
+        return _DRIVER, 1, (system.pos[link],), link
     raise EdgeListError(
         m.source,
         [EdgeListProblem(0, "", f"driver {link} is not joined to the ground by an R or P pair")],
@@ -257,11 +262,11 @@ def random_realization(system: ConstraintSystem, seed: int = 20261121) -> Realiz
     dirs: list[tuple[float, float] | None] = [(xy[0], xy[1]) for xy in raw_dirs]
     pin_xy: dict[str, tuple[float, float]] = {}
     for r, kind in enumerate(system.row_kind):
-        if kind is RowKind.PIN:
+        if kind is _PIN:
             # every link at one hinge shares one point
             point = m.pair(system.row_pair[r]).point
             points[r] = pin_xy.setdefault(point, points[r])  # type: ignore[arg-type]
-        elif kind is RowKind.SLIDE:
+        elif kind is _SLIDE:
             # the two rows of a P pair share one contact point and direction
             points[r], dirs[r] = points[r - 1], dirs[r - 1]
     return Realization(origin, tuple(points), tuple(dirs))
@@ -330,10 +335,10 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
     dirs: list[tuple[float, float] | None] = []
     for r, kind in enumerate(system.row_kind):
         point = direction = None
-        if kind in (RowKind.DRIVER, RowKind.PROBE):
+        if kind in (_DRIVER, _PROBE):
             link = system.row_link[r]
             for p in m.pairs_of(link):
-                if p.other(link) == m.ground and p.kind is PairKind.P and p.angle is not None:
+                if p.other(link) == m.ground and p.kind is _P and p.angle is not None:
                     direction = (math.cos(p.angle), math.sin(p.angle))
             points.append(None)
             dirs.append(direction)
@@ -356,15 +361,15 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
             )
         else:
             point = m.coordinates(pair.point)
-        if kind in (RowKind.SLIDE, RowKind.SLIDE_ANGLE):
+        if kind in (_SLIDE, _SLIDE_ANGLE):
             if pair.angle is None:
-                if kind is RowKind.SLIDE:
+                if kind is _SLIDE:
                     missing.append(
                         EdgeListProblem(pair.line_no, pair.label, "P pair needs angle= in a sketch")
                     )
             else:
                 direction = (math.cos(pair.angle), math.sin(pair.angle))
-        elif kind is RowKind.CONTACT:
+        elif kind is _CONTACT:
             direction = _contact_normal(m, pair.id)
             if direction is None:
                 missing.append(
@@ -380,9 +385,6 @@ def sketch_realization(system: ConstraintSystem) -> Realization:
         raise MissingGeometry(list(dict.fromkeys(missing)))
     origin = dict.fromkeys(m.links, (0.0, 0.0))
     return Realization(origin, tuple(points), tuple(dirs))
-
-
-_HINGE = RowKind.HINGE
 
 
 def row_entries(
@@ -415,29 +417,29 @@ def row_entries(
             )
         return out
     out = []
-    if kind is RowKind.PROBE:
+    if kind is _PROBE:
         u = system.row_adj[r][0]
         if system.row_size[r] == system.unknowns[u].size:
             return [(k, uo[u] + k, 1.0) for k in range(system.row_size[r])]
         # one generic combination of the block's coordinates
         return [(0, uo[u] + k, 1.0 + 0.37 * k) for k in range(system.unknowns[u].size)]
-    if kind is RowKind.DRIVER:
+    if kind is _DRIVER:
         u = system.row_adj[r][0]
         if system.unknowns[u].kind == "ang":
             return [(0, uo[u], 1.0)]
         dx, dy = realization.direction[r] or (1.0, 0.0)
         return [(0, uo[u], dx), (0, uo[u] + 1, dy)]
     pair = m.pair(system.row_pair[r])
-    if kind is RowKind.SLIDE_ANGLE:
+    if kind is _SLIDE_ANGLE:
         return [
             (0, uo[system.ang[link]], sign)
             for link, sign in ((pair.a, 1.0), (pair.b, -1.0))
             if link != ground
         ]
     cx, cy = realization.point[r]  # type: ignore[misc]
-    if kind in (RowKind.SLIDE, RowKind.CONTACT):
+    if kind in (_SLIDE, _CONTACT):
         dx, dy = realization.direction[r]  # type: ignore[misc]
-        nx_, ny_ = (-dy, dx) if kind is RowKind.SLIDE else (dx, dy)
+        nx_, ny_ = (-dy, dx) if kind is _SLIDE else (dx, dy)
         for link, sign in ((pair.a, -1.0), (pair.b, 1.0)):
             if link == ground:
                 continue

@@ -3,7 +3,7 @@
 Rows and unknowns come in blocks of 1 or 2 scalars, so the matching is a
 b-matching: row block ``r`` needs ``size[r]`` units, unknown block ``u`` offers
 ``cap[u]``. Rows are matched in the order given (Kuhn's augmenting paths,
-visiting each unknown block at most once per search), so a row that stays
+breadth first, visiting each unknown block at most once per search), so a row that stays
 unmatched is one whose constraints are already implied structurally by the
 rows before it: the redundant one is always the latest listed.
 
@@ -81,6 +81,12 @@ class Matcher:
         self.assigned[r].append(u)
 
     def _augment(self, r0: int) -> bool:
+        """Find a shortest augmenting path from row ``r0`` (breadth first) and flip it.
+
+        Breadth first keeps the search local: the free unit a new row needs
+        is almost always in the group being attached, a few steps away,
+        while a depth-first search can wander through the whole mechanism.
+        """
         self._stamp += 1
         stamp = self._stamp
         useen, rseen, adj, owners, load, cap = (
@@ -92,50 +98,46 @@ class Matcher:
             self.cap,
         )
         rseen[r0] = stamp
-        # stack frames: [is_row, node, next index]
-        stack: list[list[int]] = [[1, r0, 0]]
-        while stack:
-            frame = stack[-1]
-            if frame[0]:
-                r = frame[1]
-                a = adj[r]
-                if frame[2] >= len(a):
-                    stack.pop()
-                    continue
-                u = a[frame[2]]
-                frame[2] += 1
-                if useen[u] == stamp:
-                    continue
-                useen[u] = stamp
-                if load[u] < cap[u]:
-                    self._shift(stack, u)
-                    return True
-                stack.append([0, u, 0])
-            else:
-                u = frame[1]
-                own = owners[u]
-                if frame[2] >= len(own):
-                    stack.pop()
-                    continue
-                r = own[frame[2]]
-                frame[2] += 1
-                if rseen[r] == stamp:
-                    continue
-                rseen[r] = stamp
-                stack.append([1, r, 0])
+        reached_by: dict[int, int] = {}  # unknown -> row that reached it
+        came_through: dict[int, int] = {}  # row -> unknown it was reached through
+        frontier = [r0]
+        while frontier:
+            following: list[int] = []
+            for r in frontier:
+                for u in adj[r]:
+                    if useen[u] == stamp:
+                        continue
+                    useen[u] = stamp
+                    reached_by[u] = r
+                    if load[u] < cap[u]:
+                        self._flip(r0, r, u, reached_by, came_through)
+                        return True
+                    for r2 in owners[u]:
+                        if rseen[r2] != stamp:
+                            rseen[r2] = stamp
+                            came_through[r2] = u
+                            following.append(r2)
+            frontier = following
         return False
 
-    def _shift(self, stack: list[list[int]], free_u: int) -> None:
-        # stack: r0, u1, r1, u2, r2, ..., uk, rk ; rk takes free_u, r_{j-1} takes u_j from r_j
-        rows = [f[1] for f in stack if f[0]]
-        units = [f[1] for f in stack if not f[0]]
-        self._take(rows[-1], free_u)
-        for j in range(len(units) - 1, -1, -1):
-            u, giver, taker = units[j], rows[j + 1], rows[j]
-            self.owners[u].remove(giver)
-            self.assigned[giver].remove(u)
+    def _flip(
+        self,
+        r0: int,
+        r: int,
+        free_u: int,
+        reached_by: dict[int, int],
+        came_through: dict[int, int],
+    ) -> None:
+        # r takes the free unit; each row on the path gives its unit to the row before it
+        self._take(r, free_u)
+        while r != r0:
+            u = came_through[r]
+            taker = reached_by[u]
+            self.owners[u].remove(r)
+            self.assigned[r].remove(u)
             self.owners[u].append(taker)
             self.assigned[taker].append(u)
+            r = taker
 
     @property
     def free_units(self) -> list[tuple[int, int]]:

@@ -27,12 +27,14 @@ characterization of the Assur graphs from engineering", EJC 31 (2010).
 
 from __future__ import annotations
 
+import heapq
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import networkx as nx
 
 from .constraints import MissingGeometry, RowKind, constraint_system, sketch_realization
+from .dulmage_mendelsohn import irreducible_blocks
 from .errors import DecompositionError, MobilityError
 from .model import Mechanism, PairKind, validated
 from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
@@ -360,14 +362,23 @@ def _groups_from_blocks(
                     source = find(b)
                     if source != target:
                         edges.add((source, target))
-        dag = nx.DiGraph()
-        dag.add_nodes_from({find(b) for b in parent})
-        dag.add_edges_from(edges)
-        cycles = [c for c in nx.strongly_connected_components(dag) if len(c) > 1]
+        nodes = sorted({find(b) for b in parent})
+        number = {b: i for i, b in enumerate(nodes)}
+        succ: list[tuple[int, ...]] = [() for _ in nodes]
+        grouped: dict[int, list[int]] = {}
+        for u, v in edges:
+            grouped.setdefault(number[u], []).append(number[v])
+        for u, vs in grouped.items():
+            succ[u] = tuple(vs)
+        # strongly connected components of the group graph: cycles merge
+        components = irreducible_blocks(
+            succ, [[i] for i in range(len(nodes))], len(nodes), as_successors=True
+        )
+        cycles = [c for c in components if len(c) > 1]
         if not cycles:
             break
         for c in cycles:
-            first, *rest = c
+            first, *rest = (nodes[i] for i in c)
             for b in rest:
                 union(first, b)
     members: dict[int, list[str]] = {}
@@ -375,8 +386,8 @@ def _groups_from_blocks(
         if link in start:
             members.setdefault(find(start[link]), []).append(link)
     position = {link: i for i, link in enumerate(mechanism.links)}
-    order = list(
-        nx.lexicographical_topological_sort(dag, key=lambda b: min(position[x] for x in members[b]))
+    order = _topological_order(
+        nodes, edges, {b: min(position[x] for x in members[b]) for b in nodes}
     )
     index = {b: i for i, b in enumerate(order)}
     level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
@@ -389,7 +400,7 @@ def _groups_from_blocks(
     )
     group_dag = nx.DiGraph()
     group_dag.add_nodes_from(range(len(groups)))
-    group_dag.add_edges_from((index[u], index[v]) for u, v in dag.edges)
+    group_dag.add_edges_from((index[u], index[v]) for u, v in edges)
     return Decomposition(
         mechanism,
         tuple(drivers),
@@ -398,6 +409,28 @@ def _groups_from_blocks(
         tuple(removed_links),
         tuple(removed_pairs),
     )
+
+
+def _topological_order(
+    nodes: Sequence[int], edges: set[tuple[int, int]], key: dict[int, int]
+) -> list[int]:
+    """Kahn's algorithm, always taking the ready node of smallest ``key``."""
+    indegree = dict.fromkeys(nodes, 0)
+    out: dict[int, list[int]] = {}
+    for u, v in edges:
+        indegree[v] += 1
+        out.setdefault(u, []).append(v)
+    ready = [(key[b], b) for b in nodes if indegree[b] == 0]
+    heapq.heapify(ready)
+    order: list[int] = []
+    while ready:
+        _, b = heapq.heappop(ready)
+        order.append(b)
+        for v in out.get(b, ()):
+            indegree[v] -= 1
+            if indegree[v] == 0:
+                heapq.heappush(ready, (key[v], v))
+    return order
 
 
 _R = PairKind.R  # enum member lookups are slow in hot loops

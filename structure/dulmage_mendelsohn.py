@@ -150,24 +150,35 @@ class Matcher:
 
 
 def irreducible_blocks(
-    adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]], n_unknowns: int
+    adj: Sequence[tuple[int, ...]],
+    assigned: Sequence[Sequence[int]],
+    n_unknowns: int,
+    *,
+    as_successors: bool = False,
 ) -> list[list[int]]:
     """Strongly connected components of the matched dependency digraph, sources first.
 
     ``adj[r]`` are the unknowns row ``r`` touches, ``assigned[r]`` those it is
     matched to. Each block is a sorted list of unknown indices; blocks come in
-    a topological order (every block after the blocks it depends on), ties
-    broken by the smallest unknown index, so the order is deterministic.
+    a topological order (every block after the blocks it depends on); the
+    order is deterministic. With ``as_successors=True``, ``adj`` is already
+    the digraph (``adj[v]`` lists the successors of ``v``) and ``assigned``
+    is ignored: plain strongly connected components, sources first.
     """
-    succ: list[list[int]] = [[] for _ in range(n_unknowns)]
-    for r, units in enumerate(assigned):
-        if not units:
-            continue
-        targets = set(units)
-        for w in adj[r]:
-            for u in targets:
-                if w != u:
-                    succ[w].append(u)
+    succ: Sequence[Sequence[int]]
+    if as_successors:
+        succ = adj
+    else:
+        built: list[list[int]] = [[] for _ in range(n_unknowns)]
+        for r, units in enumerate(assigned):
+            if not units:
+                continue
+            targets = set(units)
+            for w in adj[r]:
+                for u in targets:
+                    if w != u:
+                        built[w].append(u)
+        succ = built
     # iterative Tarjan; components come out sinks first
     index = [-1] * n_unknowns
     low = [0] * n_unknowns

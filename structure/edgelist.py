@@ -40,6 +40,7 @@ from pathlib import Path
 from .errors import EdgeListError, EdgeListProblem
 from .jsonformat import mechanism_from_json
 from .model import DRIVER_KEYS, Driver, Mechanism, Pair, PointDef, pair_from_tokens, validated
+from .utils import paused_gc
 
 __all__ = ["pair_tokens", "parse_edgelist", "read_edgelist", "write_edgelist"]
 
@@ -176,7 +177,7 @@ def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
     try:
         if path.suffix.lower() == ".json":
             return mechanism_from_json(path.read_text(encoding="utf-8-sig"), source=str(path))
-        with path.open(encoding="utf-8-sig") as handle:
+        with path.open(encoding="utf-8-sig") as handle, paused_gc():
             return parse_edgelist(handle, source=str(path))
     except OSError as exc:
         raise EdgeListError(

@@ -123,9 +123,14 @@ class _Builder:
             return
         point = None
         if self.compound and self.rng.random() < self.compound:
-            choices = [p for p in self.r_points[known] if p not in used]
-            if choices:
-                point = choices[self.rng.randrange(len(choices))]
+            choices = self.r_points[known]  # the ground's list grows long: no copies
+            for _ in range(4):  # `used` holds at most 3 points
+                if not choices:
+                    break
+                candidate = choices[self.rng.randrange(len(choices))]
+                if candidate not in used:
+                    point = candidate
+                    break
         if point is None:
             self.n_r += 1
             point = f"J{self.n_r}"

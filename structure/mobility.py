@@ -152,7 +152,7 @@ def _usable_drivers(mechanism: Mechanism, drivers: Sequence[str]) -> tuple[str, 
     return tuple(
         d
         for d in drivers
-        if d in mechanism.graph
+        if d in mechanism.links
         and any(p.kind is not PairKind.H and p.other(d) == ground for p in mechanism.pairs_of(d))
     )
 

@@ -22,6 +22,7 @@ import math
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import Enum
+from functools import cached_property
 from types import MappingProxyType
 from typing import Any
 
@@ -232,7 +233,6 @@ class Mechanism:
     points: Mapping[str, PointDef] = field(default_factory=dict)
     name: str = ""
     source: str = "<python>"
-    graph: nx.MultiGraph = field(init=False, repr=False, compare=False)
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
     hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
@@ -247,7 +247,6 @@ class Mechanism:
             seen.setdefault(p.b)
         links = tuple(seen)
         object.__setattr__(self, "links", links)
-        object.__setattr__(self, "graph", _freeze_graph(self.pairs, links))
         object.__setattr__(self, "hinges", _hinges(self.pairs))
         object.__setattr__(self, "_by_id", {p.id: p for p in self.pairs})
         by_link: dict[str, list[Pair]] = {link: [] for link in links}
@@ -328,6 +327,32 @@ class Mechanism:
         return validated(self.evolve(drivers=tuple(old.get(d, Driver(d)) for d in drivers)))
 
     # ---------------------------------------------------------------- queries
+    @cached_property
+    def graph(self) -> nx.MultiGraph:
+        """The kinematic graph: a frozen ``MultiGraph``, links as nodes, pairs as edges.
+
+        Each edge is keyed by the pair's id and carries it as ``pair``. Built
+        on first use.
+        """
+        return _freeze_graph(self.pairs, self.links)
+
+    def joined(self, a: str, b: str) -> bool:
+        """True when some pair joins links ``a`` and ``b``."""
+        return any(p.other(a) == b for p in self._by_link.get(a, ()))
+
+    def connected_to_ground(self) -> set[str]:
+        """The links reachable from the ground through pairs."""
+        seen = {self.ground}
+        stack = [self.ground]
+        while stack:
+            link = stack.pop()
+            for p in self._by_link.get(link, ()):
+                other = p.other(link)
+                if other not in seen:
+                    seen.add(other)
+                    stack.append(other)
+        return seen
+
     @property
     def driver_links(self) -> tuple[str, ...]:
         return tuple(d.link for d in self.drivers)
@@ -504,10 +529,10 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
                 f"links has {len(h.links) - 1} pairs, {ug.number_of_edges()} are listed",
                 cyc.statement,
             )
-    if m.ground not in m.graph or m.graph.degree(m.ground) == 0:
+    if not m._by_link.get(m.ground):
         bad(ground_line, f"the ground {m.ground} is joined to no link", f"ground {m.ground}")
     else:
-        reach = nx.node_connected_component(m.graph, m.ground)
+        reach = m.connected_to_ground()
         loose = [link for link in m.links if link not in reach]
         if loose:
             first = min((first_of[x] for x in loose), key=lambda p: p.id)
@@ -523,9 +548,9 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
         seen_drivers.add(d.link)
         if d.link == m.ground:
             bad(d.line_no, f"the ground {d.link} cannot be a driver", d.statement)
-        elif d.link not in m.graph:
+        elif d.link not in m._by_link:
             bad(d.line_no, f"driver {d.link} is not a link of the mechanism", d.statement)
-        elif not m.graph.has_edge(d.link, m.ground):
+        elif not m.joined(d.link, m.ground):
             bad(
                 d.line_no,
                 f"driver {d.link} is not joined to the ground {m.ground}",
@@ -537,7 +562,7 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
     for p in m.points.values():
         if not (math.isfinite(p.x) and math.isfinite(p.y)):
             bad(p.line_no, f"point {p.name} has non-finite coordinates", p.statement)
-        if p.on is not None and p.on not in m.graph:
+        if p.on is not None and p.on not in m._by_link:
             bad(p.line_no, f"point {p.name} is fixed to unknown link {p.on}", p.statement)
     if problems:
         # file order; problems of the whole file (line 0) last

@@ -133,12 +133,47 @@ def _singular_blocks(
         if units:
             rows_of[block_of[units[0]]].append(r)
     trivial = (RowKind.DRIVER, RowKind.PROBE)
+    # generic regularity depends only on a block's pattern, so each pattern is
+    # evaluated once (mechanisms repeat a few group shapes many times)
+    representative: dict[tuple, int] = {}
+    same_as: dict[int, int] = {}
     by_size: dict[int, list[tuple[int, np.ndarray]]] = {}
     bad: list[int] = []
+    row_kind, row_adj, row_pair, row_size = (
+        system.row_kind,
+        system.row_adj,
+        system.row_pair,
+        system.row_size,
+    )
+    pin_kind = RowKind.PIN
     for b in range(len(blocks)) if which is None else which:
         units = blocks[b]
-        if len(units) == 1 and len(rows_of[b]) == 1 and system.row_kind[rows_of[b][0]] in trivial:
+        rows = rows_of[b]
+        if len(units) == 1 and len(rows) == 1 and row_kind[rows[0]] in trivial:
             continue  # a single driver/probe row on one block is regular by construction
+        if which is None:
+            local = {u: i for i, u in enumerate(units)}
+            shared: dict[tuple[int, int], int] = {}
+            pattern = tuple(
+                (
+                    row_kind[r],
+                    len(assigned[r]),
+                    tuple(local.get(u, -1) for u in row_adj[r]),
+                    # rows that share a point (one pin, one P pair) share it in the pattern
+                    shared.setdefault(
+                        (0, system.mechanism.pair(row_pair[r]).point)
+                        if row_kind[r] is pin_kind
+                        else (1, row_pair[r]),
+                        len(shared),
+                    ),
+                )
+                for r in rows
+            )
+            key = (tuple(system.unknowns[u].size for u in units), pattern)
+            first = representative.setdefault(key, b)
+            if first != b:
+                same_as[b] = first
+                continue
         cols: dict[int, int] = {}
         for u in units:
             for k in range(system.unknowns[u].size):
@@ -146,9 +181,9 @@ def _singular_blocks(
         size = len(cols)
         a = np.zeros((size, size))
         i = 0
-        for r in rows_of[b]:
+        for r in rows:
             matched = len(assigned[r])
-            whole = matched == system.row_size[r]
+            whole = matched == row_size[r]
             if i + matched > size:
                 break
             for lr, col, value in row_entries(system, realization, r, uo):
@@ -169,6 +204,8 @@ def _singular_blocks(
         s = np.linalg.svd(stack, compute_uv=False)
         ratio = s[:, -1] / np.maximum(1.0, s[:, 0])
         bad.extend(b for (b, _), x in zip(items, ratio, strict=True) if x <= _RANK_TOL)
+    singular = set(bad)
+    bad.extend(b for b, first in same_as.items() if first in singular)
     return sorted(bad)
 
 

@@ -26,6 +26,7 @@ from .mobility import Mobility, mobility_analysis
 from .model import Mechanism
 from .rank import generic_rank
 from .replacement import Replacement, replace_higher_pairs
+from .utils import paused_gc
 
 __all__ = [
     "DriverChoice",
@@ -115,6 +116,11 @@ def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Struc
     DecompositionError
         Links the drivers leave undetermined.
     """
+    with paused_gc():
+        return _analyze(mechanism, drivers)
+
+
+def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralReport:
     if drivers is not None:
         mechanism = mechanism.with_drivers(drivers)
     missing = sketch_problems(mechanism)

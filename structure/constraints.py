@@ -26,7 +26,9 @@ generic rank with probability 1), :func:`sketch_realization` the file's pose.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+import random
+import zlib
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from enum import Enum
 
@@ -240,36 +242,91 @@ class Realization:
     P driver.
     """
 
-    origin: dict[str, tuple[float, float]]
-    point: tuple[tuple[float, float] | None, ...]
-    direction: tuple[tuple[float, float] | None, ...]
+    origin: Mapping[str, tuple[float, float]]
+    point: Sequence[tuple[float, float] | None]
+    direction: Sequence[tuple[float, float] | None]
+
+
+class _GenericTable(Sequence):
+    """Random numbers drawn on demand, the same for the same key.
+
+    A generic realization only needs the rows that are actually evaluated
+    (one block per pattern), so nothing is drawn for the others.
+    """
+
+    def __init__(self, seed: int, keys: Sequence[tuple], kind: str):
+        self._seed = seed
+        self._keys = keys
+        self._kind = kind
+        self._cache: dict[tuple, tuple[float, float]] = {}
+
+    def __len__(self) -> int:
+        return len(self._keys)
+
+    def value(self, key: tuple) -> tuple[float, float]:
+        found = self._cache.get(key)
+        if found is None:
+            rng = random.Random(zlib.crc32(repr((self._seed, self._kind, key)).encode()))
+            if self._kind == "direction":
+                t = rng.uniform(0.0, 2.0 * math.pi)
+                found = (math.cos(t), math.sin(t))
+            else:
+                found = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))
+            self._cache[key] = found
+        return found
+
+    def __getitem__(self, r):  # type: ignore[override]
+        if isinstance(r, slice):
+            return [self.value(k) for k in self._keys[r]]
+        return self.value(self._keys[r])
+
+
+class _GenericOrigins(dict):
+    """Link origins drawn on demand (the ground's is the origin)."""
+
+    def __init__(self, seed: int, ground: str):
+        super().__init__({ground: (0.0, 0.0)})
+        self._table = _GenericTable(seed, (), "origin")
+
+    def __missing__(self, link: str) -> tuple[float, float]:
+        value = self._table.value(("link", link))
+        self[link] = value
+        return value
+
+
+class _RowKeys(Sequence):
+    """The key of each row's random point: rows at one pin or of one P pair share it."""
+
+    def __init__(self, system: ConstraintSystem):
+        self._system = system
+
+    def __len__(self) -> int:
+        return len(self._system.row_kind)
+
+    def __getitem__(self, r):  # type: ignore[override]
+        if isinstance(r, slice):
+            return [self[i] for i in range(*r.indices(len(self)))]
+        system = self._system
+        kind = system.row_kind[r]
+        if kind is _PIN:
+            return ("pin", system.mechanism.pair(system.row_pair[r]).point)
+        if kind is _SLIDE or kind is _SLIDE_ANGLE:
+            return ("pair", system.row_pair[r])
+        return ("row", r)
 
 
 def random_realization(system: ConstraintSystem, seed: int = 20261121) -> Realization:
-    """A generic placement: random link origins, pin points and directions."""
-    rng = np.random.default_rng(seed)
-    m = system.mechanism
-    n_rows = len(system.row_kind)
-    origins = rng.uniform(-1, 1, (len(m.links), 2)).tolist()
-    origin: dict[str, tuple[float, float]] = {
-        link: (xy[0], xy[1]) for link, xy in zip(m.links, origins, strict=True)
-    }
-    origin[m.ground] = (0.0, 0.0)
-    raw_points = rng.uniform(-1, 1, (n_rows, 2)).tolist()
-    angles = rng.uniform(0, 2 * math.pi, n_rows)
-    raw_dirs = np.column_stack([np.cos(angles), np.sin(angles)]).tolist()
-    points: list[tuple[float, float] | None] = [(xy[0], xy[1]) for xy in raw_points]
-    dirs: list[tuple[float, float] | None] = [(xy[0], xy[1]) for xy in raw_dirs]
-    pin_xy: dict[str, tuple[float, float]] = {}
-    for r, kind in enumerate(system.row_kind):
-        if kind is _PIN:
-            # every link at one hinge shares one point
-            point = m.pair(system.row_pair[r]).point
-            points[r] = pin_xy.setdefault(point, points[r])  # type: ignore[arg-type]
-        elif kind is _SLIDE:
-            # the two rows of a P pair share one contact point and direction
-            points[r], dirs[r] = points[r - 1], dirs[r - 1]
-    return Realization(origin, tuple(points), tuple(dirs))
+    """A generic placement: random link origins, pin points and directions.
+
+    The numbers are drawn on demand from ``seed`` and each row's key, so the
+    same system and seed always give the same realization.
+    """
+    keys = _RowKeys(system)
+    return Realization(
+        _GenericOrigins(seed, system.mechanism.ground),
+        _GenericTable(seed, keys, "point"),
+        _GenericTable(seed, keys, "direction"),
+    )
 
 
 class MissingGeometry(Exception):

@@ -173,15 +173,22 @@ def irreducible_blocks(
         for r, units in enumerate(assigned):
             if not units:
                 continue
-            targets = set(units)
-            for w in adj[r]:
-                for u in targets:
+            a = adj[r]
+            first = units[0]
+            if len(units) == 1 or all(u == first for u in units):
+                for w in a:
+                    if w != first:
+                        built[w].append(first)
+                continue
+            for u in set(units):
+                for w in a:
                     if w != u:
                         built[w].append(u)
         succ = built
     # iterative Tarjan; components come out sinks first
     index = [-1] * n_unknowns
     low = [0] * n_unknowns
+    ptr = [0] * n_unknowns
     on_stack = [False] * n_unknowns
     stack: list[int] = []
     comps: list[list[int]] = []
@@ -189,29 +196,30 @@ def irreducible_blocks(
     for root in range(n_unknowns):
         if index[root] != -1:
             continue
-        work = [(root, 0)]
         index[root] = low[root] = counter
         counter += 1
         stack.append(root)
         on_stack[root] = True
-        while work:
-            v, i = work[-1]
+        call = [root]
+        while call:
+            v = call[-1]
             s = succ[v]
+            i = ptr[v]
             if i < len(s):
-                work[-1] = (v, i + 1)
+                ptr[v] = i + 1
                 w = s[i]
                 if index[w] == -1:
                     index[w] = low[w] = counter
                     counter += 1
                     stack.append(w)
                     on_stack[w] = True
-                    work.append((w, 0))
+                    call.append(w)
                 elif on_stack[w] and index[w] < low[v]:
                     low[v] = index[w]
                 continue
-            work.pop()
-            if work:
-                parent = work[-1][0]
+            call.pop()
+            if call:
+                parent = call[-1]
                 if low[v] < low[parent]:
                     low[parent] = low[v]
             if low[v] == index[v]:

@@ -95,7 +95,9 @@ class _Builder:
     def _add(self, kind: PairKind, a: str, b: str, point: str, angle: float | None) -> None:
         if self.rng.random() < 0.5:
             a, b = b, a
-        self.pairs.append(Pair(len(self.pairs) + 1, kind, a, b, point, angle))
+        self.pairs.append(
+            Pair(id=len(self.pairs) + 1, kind=kind, a=a, b=b, point=point, angle_deg=angle)
+        )
 
     def internal(self, kind: PairKind, a: str, b: str) -> None:
         """A fresh pair between two links of the group being built."""
@@ -241,7 +243,7 @@ def random_mechanism_with_groups(
     b.n_r += 1
     b.r_points["0"].append("J1")
     b.r_points[driver].append("J1")
-    b.pairs.append(Pair(1, _R, "0", driver, "J1"))
+    b.pairs.append(Pair(id=1, kind=_R, a="0", b=driver, point="J1"))
     b.known.append(driver)
     groups: list[tuple[str, ...]] = []
     remaining = n_links - 1

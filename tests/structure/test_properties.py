@@ -11,6 +11,7 @@ specific to RPP dyads shows up in the test id.
 
 from __future__ import annotations
 
+import itertools
 import random
 from functools import lru_cache
 
@@ -185,7 +186,7 @@ def _relisted(m: Mechanism, rng: random.Random) -> Mechanism:
             rng.shuffle(rest)
             cut = rng.randrange(len(rest) + 1)
             order = rest[:cut] + keep + rest[cut:]
-            edges = list(zip(order, order[1:]))
+            edges = list(itertools.pairwise(order))
         ids = sorted(h.pairs)
         for pid, (a, b) in zip(ids, edges, strict=True):
             if rng.random() < 0.5:

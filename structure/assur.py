@@ -145,13 +145,16 @@ class Decomposition:
 
 
 def driver_candidates(mechanism: Mechanism) -> tuple[str, ...]:
-    """Links joined to the ground by an R or P pair, in order of appearance."""
+    """Links joined to the ground by an R or P pair (or a pin shared with it), in order."""
     out: dict[str, None] = {}
+    ground = mechanism.ground
+    hinged = {x for h in mechanism.compound_hinges.values() if ground in h.links for x in h.links}
     for p in mechanism.pairs:
-        if p.kind is not PairKind.H and mechanism.ground in p.links:
-            other = p.other(mechanism.ground)
-            if other != mechanism.ground:
-                out.setdefault(other)
+        for link in p.links:
+            if link != ground and (
+                (p.kind is not PairKind.H and p.other(link) == ground) or link in hinged
+            ):
+                out.setdefault(link)
     return tuple(out)
 
 
@@ -488,7 +491,7 @@ def _group_pairs(
                     middle_letter = "R"
                 if known:
                     # the pin is fixed by the earliest known link at it (the ground first)
-                    anchor = min(known, key=done.__getitem__)
+                    anchor = min(known, key=lambda x: (done[x], x != mechanism.ground))
                     pairs.append(GroupPair(_R, (inside[0], anchor), h.point, True))
                     external_letter.setdefault(inside[0], "R")
                 continue

@@ -337,8 +337,10 @@ class Mechanism:
         return _freeze_graph(self.pairs, self.links)
 
     def joined(self, a: str, b: str) -> bool:
-        """True when some pair joins links ``a`` and ``b``."""
-        return any(p.other(a) == b for p in self._by_link.get(a, ()))
+        """True when some pair joins links ``a`` and ``b``, or they share a compound hinge."""
+        if any(p.other(a) == b for p in self._by_link.get(a, ())):
+            return True
+        return any(a in h.links and b in h.links for h in self.compound_hinges.values())
 
     def connected_to_ground(self) -> set[str]:
         """The links reachable from the ground through pairs."""

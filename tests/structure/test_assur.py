@@ -143,3 +143,28 @@ def test_higher_pairs_must_be_replaced_first():
 
 def test_roman():
     assert [roman(k) for k in (1, 2, 3, 4, 9, 14)] == ["I", "II", "III", "IV", "IX", "XIV"]
+
+
+def test_driver_pinned_to_the_ground_through_a_compound_hinge():
+    # links 0, 1, 3 share pin A; listing 3–1 and 3–0 instead of 0–1 is the same four-bar
+    d = decompose(mech("driver 1\n3 1 R A\n1 2 R B\n2 3 R C\n3 0 R A"))
+    assert groups_of(d) == [(["2", "3"], 2, 2)]
+
+
+def test_rpp_dyad_next_to_an_rrr_dyad_stays_two_groups():
+    # the guides fix the RPP dyad's middle angle early; the pair must not be split
+    text = """
+driver 1
+0 1 R A
+1 2 R B
+2 3 P C angle=10
+3 0 P D angle=80
+2 4 R E
+4 5 R F
+5 0 R G
+"""
+    d = decompose(mech(text))
+    assert sorted((sorted(g.links), g.kind) for g in d.groups) == [
+        (["2", "3"], "RPP"),
+        (["4", "5"], "RRR"),
+    ]

@@ -2,4 +2,19 @@
 
 Text -> :class:`Mechanism` -> :class:`StructuralReport` (Assur groups in solve
 order) -> the solvers of the ``kinematics`` package.
+
+>>> import structure
+>>> m = structure.parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
+>>> structure.analyze(m).formula
+'I(1) → II(2,3)'
 """
+
+from .assur import *  # noqa: F403
+from .edgelist import *  # noqa: F403
+from .errors import *  # noqa: F403
+from .generators import *  # noqa: F403
+from .jsonformat import *  # noqa: F403
+from .mobility import *  # noqa: F403
+from .model import *  # noqa: F403
+from .replacement import *  # noqa: F403
+from .report import *  # noqa: F403

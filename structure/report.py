@@ -151,12 +151,12 @@ def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralR
                 f"independent drivers ({', '.join(drivers_used) or 'none'})",
                 mob,
             )
+    rmob = mob
     if replacements or chosen:
-        rmob, generic, geometric = mobility_analysis(replaced, drivers_used)
-    else:
-        rmob = mob
-    if not replacements:
-        rmob = mob
+        # the rank analyses are reused by the decomposition: redo them for what it sees
+        replaced_mob, generic, geometric = mobility_analysis(replaced, drivers_used)
+        if replacements:
+            rmob = replaced_mob
     decomposition = decompose(replaced, drivers_used, analyses=(generic, geometric))
     return StructuralReport(
         mechanism, mob, replaced, rmob, replacements, tuple(drivers_used), chosen, decomposition

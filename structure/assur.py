@@ -68,13 +68,15 @@ class GroupPair:
     """A pair of an Assur group: ``links[0]`` is a group link.
 
     External pairs join a group link to a known link (``links[1]``); internal
-    pairs join two group links. A compound hinge is expanded canonically.
+    pairs join two group links. A compound hinge is expanded canonically
+    (``pair`` is then 0; otherwise it is the id of the mechanism's pair).
     """
 
     kind: PairKind
     links: tuple[str, str]
     point: str | None
     external: bool
+    pair: int = 0  # id of the mechanism's pair (0 for a compound hinge's canonical pair)
 
 
 @dataclass(frozen=True, slots=True)
@@ -496,11 +498,11 @@ def _group_pairs(
                     external_letter.setdefault(inside[0], "R")
                 continue
             if other in members:
-                pairs.append(GroupPair(p.kind, (link, other), p.point, False))
+                pairs.append(GroupPair(p.kind, (link, other), p.point, False, p.id))
                 joints.append((link, other))
                 middle_letter = p.kind.value
             elif done[other] < level:
-                pairs.append(GroupPair(p.kind, (link, other), p.point, True))
+                pairs.append(GroupPair(p.kind, (link, other), p.point, True, p.id))
                 external_letter.setdefault(link, p.kind.value)
     return pairs, joints, external_letter, middle_letter
 

@@ -11,6 +11,12 @@ import json
 import sys
 from collections.abc import Sequence
 
+import numpy as np
+
+from kinematics.plan import make_plan
+from kinematics.report import state_to_dict
+from kinematics.solve import solve_pose
+
 from .edgelist import read_edgelist
 from .errors import MechanismError, MobilityError
 from .report import (
@@ -45,6 +51,12 @@ def _parser() -> argparse.ArgumentParser:
         help="list the groups for every admissible driver choice",
     )
     classify.add_argument("--json", action="store_true", help="print one JSON object")
+    kin = sub.add_parser(
+        "kinematics",
+        help="positions, velocities and accelerations at the sketch pose, group by group",
+    )
+    kin.add_argument("file", help="edge-list file with point coordinates and driver motion")
+    kin.add_argument("--json", action="store_true", help="print one JSON object")
     return parser
 
 
@@ -71,6 +83,58 @@ def _classify(args: argparse.Namespace) -> int:
     return 0
 
 
+def _vector(v: object) -> str:
+    x, y = v  # type: ignore[misc]
+    return f"({x:.6g}, {y:.6g})"
+
+
+def _kinematics(args: argparse.Namespace) -> int:
+    try:
+        report = analyze(read_edgelist(args.file))
+        plan = make_plan(report)
+        state = solve_pose(plan)
+    except MechanismError as exc:
+        if args.json:
+            print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
+        sys.stderr.write(f"error: {exc}\n")
+        return 1
+    if args.json:
+        print(json.dumps(state_to_dict(state), indent=2, ensure_ascii=False))
+        return 0
+    m = report.mechanism
+    out = [f"{m.name or 'mechanism'}  ({m.source})", ""]
+    for d in plan.drivers:
+        unit = ("ω", "rad/s", "ε", "rad/s²") if d.kind == "R" else ("v", "m/s", "a", "m/s²")
+        assumed = "" if d.speed_given else " (not given in the file: assumed 0)"
+        out.append(
+            f"Driver {d.link}: {unit[0]} = {d.speed:g} {unit[1]}, "
+            f"{unit[2]} = {d.acceleration:g} {unit[3]}{assumed}"
+        )
+    out.append("")
+    out.append("Solved in this order:")
+    for i, step in enumerate(plan.steps, start=1):
+        kind = f" {step.group.kind}" if step.group.kind else ""
+        out.append(f"  {i}. {step.label}{kind}: links {', '.join(step.links)}")
+    out.append("")
+    out.append("Links (angle turned from the sketch):")
+    for name, link in state.links.items():
+        out.append(
+            f"  {name}: angle {link.angle:.6g} rad, ω = {link.omega:.6g} rad/s, "
+            f"ε = {link.epsilon:.6g} rad/s²"
+        )
+    out.append("")
+    out.append("Points:")
+    for name, point in state.points.items():
+        out.append(
+            f"  {name} (on {point.link}): position {_vector(point.position)} m, "
+            f"v = {_vector(point.velocity)} m/s (|v| = {float(np.hypot(*point.velocity)):.6g}), "
+            f"a = {_vector(point.acceleration)} m/s² "
+            f"(|a| = {float(np.hypot(*point.acceleration)):.6g})"
+        )
+    sys.stdout.write("\n".join(out) + "\n")
+    return 0
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code."""
     parser = _parser()
@@ -80,6 +144,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return int(exc.code or 0)
     if args.command == "classify":
         return _classify(args)
+    if args.command == "kinematics":
+        return _kinematics(args)
     parser.error(f"unknown command {args.command}")
     return 2
 

@@ -1,0 +1,171 @@
+"""The solve plan: the structural report's groups in solve order, as equations.
+
+:func:`make_plan` turns a :class:`~structure.report.StructuralReport` (its
+lower-pair mechanism, drivers and Assur groups) and the sketch coordinates
+into what the solvers need: for each driver its pivot or slide, for each group
+its links and the equations of its pairs. Nothing is solved here.
+
+>>> from structure.edgelist import parse_edgelist
+>>> from structure.report import analyze
+>>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+...                     "point A 0 0", "point B 0 1", "point C 2 1", "point D 2 0"])
+>>> plan = make_plan(analyze(m))
+>>> [(s.label, len(s.equations)) for s in plan.steps]
+[('II(2,3)', 3)]
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+
+import numpy as np
+
+from structure.assur import AssurGroup
+from structure.errors import EdgeListError, EdgeListProblem
+from structure.model import Mechanism, PairKind
+from structure.report import StructuralReport
+
+from .equations import Equation
+
+__all__ = ["DriverStep", "GroupStep", "SolvePlan", "make_plan"]
+
+
+@dataclass(frozen=True)
+class DriverStep:
+    """A driver: ``kind`` 'R' (turns about ``pivot``) or 'P' (slides along ``direction``)."""
+
+    link: str
+    kind: str
+    pivot: np.ndarray
+    direction: np.ndarray
+    speed: float  # ω (rad/s) or v (m/s)
+    acceleration: float  # ε (rad/s²) or a (m/s²)
+    speed_given: bool
+
+
+@dataclass(frozen=True)
+class GroupStep:
+    """One Assur group to solve: its links and the equations of its pairs."""
+
+    group: AssurGroup
+    equations: tuple[Equation, ...]
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        return self.group.links
+
+    @property
+    def label(self) -> str:
+        return self.group.label
+
+
+@dataclass(frozen=True)
+class SolvePlan:
+    """Drivers, then groups in solve order, and the points to report.
+
+    ``points`` maps a point name to the link that carries it and its sketch
+    coordinates; ``length`` is the sketch's size (for tolerances).
+    """
+
+    mechanism: Mechanism
+    drivers: tuple[DriverStep, ...]
+    steps: tuple[GroupStep, ...]
+    points: Mapping[str, tuple[str, np.ndarray]]
+    length: float
+
+
+def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
+    xy = mechanism.coordinates(name) if name is not None else None
+    if xy is None:
+        problems.append(
+            EdgeListProblem(
+                0, "", f"{why}: point {name or '(unnamed)'} needs coordinates for kinematics"
+            )
+        )
+        return np.zeros(2)
+    return np.array(xy, dtype=float)
+
+
+def _unit(angle_deg: float | None) -> np.ndarray:
+    t = math.radians(angle_deg or 0.0)
+    return np.array([math.cos(t), math.sin(t)])
+
+
+def make_plan(report: StructuralReport) -> SolvePlan:
+    """The solve plan of a structural report whose mechanism has sketch coordinates.
+
+    Raises
+    ------
+    EdgeListError
+        A pair point without coordinates, or a P pair without ``angle=``.
+    """
+    m = report.replaced
+    problems: list[EdgeListProblem] = []
+    drivers: list[DriverStep] = []
+    motion = {d.link: dict(d.motion) for d in report.mechanism.drivers}
+    for link in report.drivers:
+        values = motion.get(link, {})
+        to_ground = [p for p in m.pairs_of(link) if p.other(link) == m.ground]
+        hinged = [
+            h for h in m.compound_hinges.values() if link in h.links and m.ground in h.links
+        ]
+        r_pair = next((p for p in to_ground if p.kind is PairKind.R), None)
+        if r_pair is not None or hinged:
+            point = r_pair.point if r_pair is not None else hinged[0].point
+            pivot = _xy(m, point, f"driver {link}'s pivot", problems)
+            speed, acc = values.get("omega"), values.get("epsilon", 0.0)
+            drivers.append(
+                DriverStep(link, "R", pivot, np.zeros(2), speed or 0.0, acc, speed is not None)
+            )
+            continue
+        p_pair = next(p for p in to_ground if p.kind is PairKind.P)
+        if p_pair.angle_deg is None:
+            problems.append(EdgeListProblem(p_pair.line_no, p_pair.statement, "needs angle="))
+        direction = _unit(p_pair.angle_deg)  # v > 0 moves the driver along angle=
+        speed, acc = values.get("v"), values.get("a", 0.0)
+        drivers.append(
+            DriverStep(link, "P", np.zeros(2), direction, speed or 0.0, acc, speed is not None)
+        )
+    steps: list[GroupStep] = []
+    for group in report.groups:
+        equations: list[Equation] = []
+        for gp in group.pairs:
+            a, b = gp.links
+            if gp.kind is PairKind.R:
+                c = _xy(m, gp.point, f"pair {a}–{b} R", problems)
+                equations.append(Equation("HINGE", a, b, c))
+                continue
+            pair = m.pair(gp.pair)
+            if pair.angle_deg is None:
+                problems.append(EdgeListProblem(pair.line_no, pair.statement, "needs angle="))
+            u = _unit(pair.angle_deg)
+            c = _xy(m, gp.point, f"pair {pair.label}", problems)
+            equations.append(Equation("ANGLE", a, b))
+            equations.append(Equation("SLIDE", a, b, c, np.array([-u[1], u[0]])))
+        steps.append(GroupStep(group, tuple(equations)))
+    if problems:
+        raise EdgeListError(m.source, problems)
+    points: dict[str, tuple[str, np.ndarray]] = {}
+    for h in m.hinges:
+        xy = m.coordinates(h.point)
+        if xy is not None:
+            # a pin on the ground stays put; otherwise any of its links carries it
+            carrier = m.ground if m.ground in h.links else h.links[0]
+            points[h.point] = (carrier, np.array(xy, dtype=float))
+    for p in m.pairs:
+        if p.kind is PairKind.P and p.point and p.point not in points:
+            xy = m.coordinates(p.point)
+            if xy is not None:
+                carrier = p.b if p.b != m.ground else p.a
+                points[p.point] = (carrier, np.array(xy, dtype=float))
+    for pt in m.points.values():
+        if pt.on is not None:
+            points[pt.name] = (pt.on, np.array([pt.x, pt.y]))
+    coords = np.array([[p.x, p.y] for p in m.points.values()]) if m.points else np.zeros((1, 2))
+    span = float(np.max(np.ptp(coords, axis=0))) if len(coords) > 1 else 1.0
+    return SolvePlan(
+        m, tuple(drivers), tuple(steps), MappingProxyType(points), span if span > 0 else 1.0
+    )

@@ -1,0 +1,162 @@
+"""Positions, velocities and accelerations: closed forms and finite differences."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from kinematics.plan import make_plan
+from kinematics.solve import AssemblyError, SingularPoseError, solve_pose
+from structure.constraints import sketch_problems
+from structure.edgelist import parse_edgelist, read_edgelist
+from structure.report import analyze
+
+from ..conftest import FIXTURES
+
+
+def plan_of(text: str):
+    return make_plan(analyze(parse_edgelist(text.strip().splitlines())))
+
+
+# problem 2.4: ∠ABC = ∠BCD = 90°, 4·AB = BC = CD = 0.4 m, ω1 = 20 s⁻¹
+FOURBAR_2_4 = """
+driver 1 omega=20
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0 0.1
+point C 0.4 0.1
+point D 0.4 -0.3
+"""
+
+
+def test_fourbar_of_problem_2_4_by_the_vector_polygons():
+    # v_B = ω1·AB = 2 m/s along −x; BC ⟂ CD makes v_C = v_B, so ω2 = 0 and ω3 = 2/0.4 = 5.
+    # a_B = (0, −40); a_C = a_B + ε2 k×BC = ε3 k×DC − ω3²·DC gives ε3 = 0, ε2 = 75.
+    state = solve_pose(plan_of(FOURBAR_2_4))
+    assert state.links["2"].omega == pytest.approx(0.0, abs=1e-12)
+    assert state.links["3"].omega == pytest.approx(5.0)
+    assert state.links["2"].epsilon == pytest.approx(75.0)
+    assert state.links["3"].epsilon == pytest.approx(0.0, abs=1e-9)
+    np.testing.assert_allclose(state.points["C"].velocity, [-2.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(state.points["C"].acceleration, [0.0, -10.0], atol=1e-9)
+
+
+def slider_closed_form(r: float, l: float, e: float, phi: float, w: float) -> tuple:
+    """Offset crank–slider: slider x, ẋ, ẍ for crank angle φ, constant ω."""
+    s = r * math.sin(phi) - e
+    root = math.sqrt(l * l - s * s)
+    x = r * math.cos(phi) + root
+    dx = -r * w * math.sin(phi) - s * r * w * math.cos(phi) / root
+    # second derivative by differentiating dx once more (closed form)
+    ds = r * w * math.cos(phi)
+    dds = -r * w * w * math.sin(phi)
+    droot = -s * ds / root
+    ddx = -r * w * w * math.cos(phi) - ((ds * ds + s * dds) * root - s * ds * droot) / root**2
+    return x, dx, ddx
+
+
+@pytest.mark.parametrize("phi_deg", [20.0, 75.0, 160.0, 250.0])
+def test_offset_crank_slider_against_its_closed_form(phi_deg):
+    r, l, e, w = 0.1, 0.35, 0.03, 15.0
+    phi = math.radians(phi_deg)
+    bx, by = r * math.cos(phi), r * math.sin(phi)
+    x, dx, ddx = slider_closed_form(r, l, e, phi, w)
+    text = f"""
+driver 1 omega={w}
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 P C angle=0
+point A 0 0
+point B {bx!r} {by!r}
+point C {x!r} {e!r}
+"""
+    state = solve_pose(plan_of(text))
+    c = state.points["C"]
+    np.testing.assert_allclose(c.velocity, [dx, 0.0], atol=1e-10)
+    np.testing.assert_allclose(c.acceleration, [ddx, 0.0], atol=1e-8)
+    assert state.links["3"].omega == 0.0 or abs(state.links["3"].omega) < 1e-12
+
+
+def fixtures_with_sketch():
+    out = []
+    for path in sorted(FIXTURES.glob("*.edges")):
+        m = read_edgelist(path)
+        if m.points and not sketch_problems(m):
+            out.append(path.name)
+    return out
+
+
+@pytest.mark.parametrize("name", fixtures_with_sketch())
+def test_velocities_and_accelerations_match_finite_differences(name):
+    plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
+    speeds = [d.speed if d.speed_given else 1.0 for d in plan.drivers]
+    accels = [d.acceleration for d in plan.drivers]
+    drivers = [
+        d.__class__(d.link, d.kind, d.pivot, d.direction, s, a, True)
+        for d, s, a in zip(plan.drivers, speeds, accels, strict=True)
+    ]
+    plan = plan.__class__(plan.mechanism, tuple(drivers), plan.steps, plan.points, plan.length)
+    base = solve_pose(plan)
+    h = 1e-4 / max(1.0, max(abs(s) for s in speeds))
+
+    def at(t: float):
+        inputs = tuple(s * t + 0.5 * a * t * t for s, a in zip(speeds, accels, strict=True))
+        return solve_pose(plan, inputs, {k: v.q for k, v in base.links.items()})
+
+    ahead, behind = at(h), at(-h)
+    for link, st in base.links.items():
+        dq = (ahead.links[link].q - behind.links[link].q) / (2 * h)
+        ddq = (ahead.links[link].q - 2 * st.q + behind.links[link].q) / h**2
+        scale = 1.0 + float(np.abs(st.qdd).max())
+        np.testing.assert_allclose(st.qd, dq, atol=1e-6 * (1 + float(np.abs(st.qd).max())))
+        np.testing.assert_allclose(st.qdd, ddq, atol=2e-3 * scale)
+    for point, ps in base.points.items():
+        dp = (ahead.points[point].position - behind.points[point].position) / (2 * h)
+        np.testing.assert_allclose(ps.velocity, dp, atol=1e-6 * (1 + float(np.abs(dp).max())))
+
+
+def test_a_pose_that_cannot_be_assembled_is_named():
+    # crank 0.1, coupler √0.05 ≈ 0.224, rocker √0.02 ≈ 0.141 on a 0.4 base: turned by half a
+    # turn the crank pin is 0.5 from D, beyond the reach 0.365 of the dyad
+    text = """
+driver 1 omega=1
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0.1 0
+point C 0.3 0.1
+point D 0.4 0
+"""
+    plan = plan_of(text)
+    with pytest.raises(AssemblyError, match=r"II\(2,3\).*cannot be assembled"):
+        solve_pose(plan, (math.pi,))
+
+
+def test_a_dead_centre_is_named():
+    # BC = 0.3, CD = 0.2, D at 0.4: turned by half a turn the crank pin B is 0.5 from D,
+    # so B, C, D are collinear (coupler and rocker stretched): the dyad's Jacobian loses rank
+    cx = 1 / 3
+    cy = math.sqrt(0.09 - (cx - 0.1) ** 2)
+    text = f"""
+driver 1 omega=1
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0.1 0
+point C {cx!r} {cy!r}
+point D 0.4 0
+"""
+    plan = plan_of(text)
+    solve_pose(plan, (math.pi - 0.01,))  # close to it the group still assembles
+    with pytest.raises(SingularPoseError, match=r"II\(2,3\).*dead centre"):
+        solve_pose(plan, (math.pi,))

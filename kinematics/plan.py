@@ -109,9 +109,7 @@ def make_plan(report: StructuralReport) -> SolvePlan:
     for link in report.drivers:
         values = motion.get(link, {})
         to_ground = [p for p in m.pairs_of(link) if p.other(link) == m.ground]
-        hinged = [
-            h for h in m.compound_hinges.values() if link in h.links and m.ground in h.links
-        ]
+        hinged = [h for h in m.compound_hinges.values() if link in h.links and m.ground in h.links]
         r_pair = next((p for p in to_ground if p.kind is PairKind.R), None)
         if r_pair is not None or hinged:
             point = r_pair.point if r_pair is not None else hinged[0].point

@@ -126,9 +126,7 @@ def _place_drivers(
             q[d.link] = np.array([*(d.pivot - rotate(value, d.pivot)), value])
             r = rotate(value, d.pivot)
             qd[d.link] = np.array([*(-d.speed * (_J @ r)), d.speed])
-            qdd[d.link] = np.array(
-                [*(-d.acceleration * (_J @ r) + d.speed**2 * r), d.acceleration]
-            )
+            qdd[d.link] = np.array([*(-d.acceleration * (_J @ r) + d.speed**2 * r), d.acceleration])
         else:
             q[d.link] = np.array([*(value * d.direction), 0.0])
             qd[d.link] = np.array([*(d.speed * d.direction), 0.0])
@@ -172,9 +170,7 @@ def _scaled(jac: np.ndarray, length: float) -> np.ndarray:
     return scaled
 
 
-def _solve_group(
-    step: GroupStep, plan: SolvePlan, q: dict, inputs: tuple[float, ...]
-) -> None:
+def _solve_group(step: GroupStep, plan: SolvePlan, q: dict, inputs: tuple[float, ...]) -> None:
     index = {link: i for i, link in enumerate(step.links)}
     zero = np.zeros(3)
     tol = 1e-13 * plan.length
@@ -280,4 +276,3 @@ def solve_pose(
             _frozen(a[:2] + a[2] * (_J @ r) - v[2] ** 2 * r),
         )
     return KinematicState(MappingProxyType(links), MappingProxyType(points), inputs)
-

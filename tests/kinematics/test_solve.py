@@ -46,10 +46,10 @@ def test_fourbar_of_problem_2_4_by_the_vector_polygons():
     np.testing.assert_allclose(state.points["C"].acceleration, [0.0, -10.0], atol=1e-9)
 
 
-def slider_closed_form(r: float, l: float, e: float, phi: float, w: float) -> tuple:
+def slider_closed_form(r: float, rod: float, e: float, phi: float, w: float) -> tuple:
     """Offset crank–slider: slider x, ẋ, ẍ for crank angle φ, constant ω."""
     s = r * math.sin(phi) - e
-    root = math.sqrt(l * l - s * s)
+    root = math.sqrt(rod * rod - s * s)
     x = r * math.cos(phi) + root
     dx = -r * w * math.sin(phi) - s * r * w * math.cos(phi) / root
     # second derivative by differentiating dx once more (closed form)
@@ -62,10 +62,10 @@ def slider_closed_form(r: float, l: float, e: float, phi: float, w: float) -> tu
 
 @pytest.mark.parametrize("phi_deg", [20.0, 75.0, 160.0, 250.0])
 def test_offset_crank_slider_against_its_closed_form(phi_deg):
-    r, l, e, w = 0.1, 0.35, 0.03, 15.0
+    r, rod, e, w = 0.1, 0.35, 0.03, 15.0
     phi = math.radians(phi_deg)
     bx, by = r * math.cos(phi), r * math.sin(phi)
-    x, dx, ddx = slider_closed_form(r, l, e, phi, w)
+    x, dx, ddx = slider_closed_form(r, rod, e, phi, w)
     text = f"""
 driver 1 omega={w}
 0 1 R A

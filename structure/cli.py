@@ -16,6 +16,7 @@ import numpy as np
 from kinematics.plan import make_plan
 from kinematics.report import state_to_dict
 from kinematics.solve import solve_pose
+from kinematics.sweep import sweep
 
 from .edgelist import read_edgelist
 from .errors import MechanismError, MobilityError
@@ -57,6 +58,10 @@ def _parser() -> argparse.ArgumentParser:
     )
     kin.add_argument("file", help="edge-list file with point coordinates and driver motion")
     kin.add_argument("--json", action="store_true", help="print one JSON object")
+    sw = sub.add_parser("sweep", help="the kinematics over a whole turn of the driver(s)")
+    sw.add_argument("file", help="edge-list file with point coordinates and driver motion")
+    sw.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
+    sw.add_argument("--csv", metavar="OUT", help="write every pose to this CSV file")
     return parser
 
 
@@ -135,6 +140,35 @@ def _kinematics(args: argparse.Namespace) -> int:
     return 0
 
 
+def _sweep(args: argparse.Namespace) -> int:
+    if args.steps < 1:
+        sys.stderr.write("error: --steps must be at least 1\n")
+        return 2
+    try:
+        result = sweep(make_plan(analyze(read_edgelist(args.file))), steps=args.steps)
+    except MechanismError as exc:
+        sys.stderr.write(f"error: {exc}\n")
+        return 1
+    out = [f"{args.steps} poses over one turn of the driver(s) of {args.file}", ""]
+    out.append("link   ω min … max (rad/s)        ε min … max (rad/s²)")
+    for name, values in result.links.items():
+        w, e = values["omega"], values["epsilon"]
+        out.append(
+            f"{name:6} {w.min():11.6g} … {w.max():<11.6g} {e.min():11.6g} … {e.max():<11.6g}"
+        )
+    for label, mu in result.transmission.items():
+        out.append(
+            f"transmission angle of {label}: {np.degrees(mu.min()):.4g}° … "
+            f"{np.degrees(mu.max()):.4g}°"
+        )
+    if args.csv:
+        with open(args.csv, "w", encoding="utf-8") as handle:
+            handle.write(result.to_csv())
+        out.append(f"wrote {args.csv}")
+    sys.stdout.write("\n".join(out) + "\n")
+    return 0
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code."""
     parser = _parser()
@@ -146,6 +180,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _classify(args)
     if args.command == "kinematics":
         return _kinematics(args)
+    if args.command == "sweep":
+        return _sweep(args)
     parser.error(f"unknown command {args.command}")
     return 2
 

@@ -1,0 +1,160 @@
+"""Sweeps: the kinematics over a list of inputs (a whole crank turn by default).
+
+Each pose starts Newton from the previous one, so the assembly mode of the
+sketch is kept by continuity; a pose that cannot be assembled or a dead centre
+stops the sweep with the error naming the group and the input, never a NaN.
+Results are numpy arrays, one row per pose, ready to plot or export.
+
+>>> from structure.edgelist import parse_edgelist
+>>> from structure.report import analyze
+>>> from kinematics.plan import make_plan
+>>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+...                     "point A 0 0", "point B 0.1 0", "point C 0.3 0.3", "point D 0.4 0"])
+>>> s = sweep(make_plan(analyze(m)), steps=8)
+>>> s.links["3"]["omega"].shape, round(float(s.inputs[1, 0]), 6)
+((8,), 0.785398)
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from .plan import SolvePlan
+from .solve import solve_pose
+
+__all__ = ["Sweep", "sweep", "transmission_angle"]
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """Arrays over the poses of a sweep.
+
+    ``inputs`` has shape (poses, drivers); ``links[name]`` holds ``angle``,
+    ``omega``, ``epsilon`` (shape (poses,)); ``points[name]`` holds
+    ``position``, ``velocity``, ``acceleration`` (shape (poses, 2));
+    ``transmission[group]`` the transmission angle of each RRR dyad (rad).
+    """
+
+    inputs: np.ndarray
+    links: Mapping[str, Mapping[str, np.ndarray]]
+    points: Mapping[str, Mapping[str, np.ndarray]]
+    transmission: Mapping[str, np.ndarray]
+
+    def as_dict(self) -> dict[str, np.ndarray]:
+        """Flat ``{column name: array}``, e.g. ``'3.omega'``, ``'C.velocity.x'``."""
+        out: dict[str, np.ndarray] = {}
+        for k in range(self.inputs.shape[1]):
+            out[f"input{k + 1}"] = self.inputs[:, k]
+        for name, values in self.links.items():
+            for key, arr in values.items():
+                out[f"{name}.{key}"] = arr
+        for name, values in self.points.items():
+            for key, arr in values.items():
+                out[f"{name}.{key}.x"] = arr[:, 0]
+                out[f"{name}.{key}.y"] = arr[:, 1]
+        for name, arr in self.transmission.items():
+            out[f"transmission {name}"] = arr
+        return out
+
+    def to_csv(self) -> str:
+        """The sweep as CSV text, one row per pose, SI units and radians."""
+        columns = self.as_dict()
+        buffer = io.StringIO()
+        writer = csv.writer(buffer, lineterminator="\n")
+        writer.writerow(columns)
+        for row in zip(*columns.values(), strict=True):
+            writer.writerow([repr(float(x)) for x in row])
+        return buffer.getvalue()
+
+
+def transmission_angle(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> float:
+    """Angle at the middle pin ``c`` between ``c − b`` and ``c − d`` (rad, in [0, π]).
+
+    >>> round(math.degrees(transmission_angle(np.array([0, 0]), np.array([1, 1]),
+    ...                                       np.array([2, 0]))), 6)
+    90.0
+    """
+    u, v = c - b, c - d
+    cos = float(u @ v) / (float(np.hypot(*u)) * float(np.hypot(*v)))
+    return math.acos(max(-1.0, min(1.0, cos)))
+
+
+def _rrr_pins(plan: SolvePlan) -> dict[str, tuple[str, str, str]]:
+    """Point names (external, middle, external) of each RRR dyad with named pins."""
+    out = {}
+    for step in plan.steps:
+        g = step.group
+        if g.kind != "RRR":
+            continue
+        ext = [p.point for p in g.external_pairs]
+        mid = [p.point for p in g.internal_pairs]
+        if len(ext) == 2 and len(mid) == 1 and all(x in plan.points for x in (*ext, *mid)):
+            out[g.label] = (ext[0], mid[0], ext[1])  # type: ignore[assignment]
+    return out
+
+
+def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -> Sweep:
+    """Solve every pose of ``inputs`` (shape (poses,) or (poses, drivers)).
+
+    By default each rotating driver makes one turn from the sketch in
+    ``steps`` equal steps (a sliding driver stays at the sketch).
+
+    Raises
+    ------
+    AssemblyError, SingularPoseError
+        At the first pose that cannot be solved, naming it.
+    """
+    if inputs is None:
+        turn = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
+        inputs = np.column_stack([turn if d.kind == "R" else np.zeros(steps) for d in plan.drivers])
+    inputs = np.asarray(inputs, dtype=float)
+    if inputs.ndim == 1:
+        inputs = inputs[:, None]
+    n = inputs.shape[0]
+    states = []
+    guess = None
+    for k in range(n):
+        state = solve_pose(plan, tuple(inputs[k]), guess)
+        guess = {name: link.q for name, link in state.links.items()}
+        states.append(state)
+    links = (
+        {
+            name: {
+                "angle": np.array([s.links[name].angle for s in states]),
+                "omega": np.array([s.links[name].omega for s in states]),
+                "epsilon": np.array([s.links[name].epsilon for s in states]),
+            }
+            for name in states[0].links
+        }
+        if states
+        else {}
+    )
+    points = (
+        {
+            name: {
+                key: np.array([getattr(s.points[name], key) for s in states])
+                for key in ("position", "velocity", "acceleration")
+            }
+            for name in states[0].points
+        }
+        if states
+        else {}
+    )
+    transmission = {
+        label: np.array(
+            [
+                transmission_angle(
+                    points[b]["position"][k], points[c]["position"][k], points[d]["position"][k]
+                )
+                for k in range(n)
+            ]
+        )
+        for label, (b, c, d) in _rrr_pins(plan).items()
+    }
+    return Sweep(inputs, links, points, transmission)

@@ -1,0 +1,74 @@
+"""Sweeps over a whole turn: continuity, transmission angle, export."""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+
+import numpy as np
+import pytest
+
+from kinematics.plan import make_plan
+from kinematics.solve import AssemblyError
+from kinematics.sweep import sweep
+from structure.cli import main
+from structure.edgelist import parse_edgelist
+from structure.report import analyze
+
+CRANK_ROCKER = """
+driver 1 omega=10
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0.1 0
+point C 0.3 0.3
+point D 0.4 0
+"""
+
+
+def plan_of(text: str):
+    return make_plan(analyze(parse_edgelist(text.strip().splitlines())))
+
+
+def test_transmission_angle_extremes_of_a_crank_rocker():
+    # a = 0.1, b = |BC| = √0.13, c = |CD| = √0.1, d = 0.4; the extremes come with the crank
+    # along the base: cos μ = (b² + c² − (d ∓ a)²) / (2bc)
+    result = sweep(plan_of(CRANK_ROCKER), steps=360)
+    b2, c2 = 0.13, 0.1
+    mu = {
+        s: math.acos((b2 + c2 - s**2) / (2 * math.sqrt(b2 * c2)))
+        for s in (0.3, 0.5)  # d − a, d + a
+    }
+    (angles,) = result.transmission.values()
+    assert angles.min() == pytest.approx(mu[0.3], abs=1e-9)
+    assert angles.max() == pytest.approx(mu[0.5], abs=1e-9)
+
+
+def test_angular_velocity_is_the_rate_of_the_angle_over_the_sweep():
+    result = sweep(plan_of(CRANK_ROCKER), steps=3600)
+    dt = (2 * math.pi / 3600) / 10.0  # time per step at ω1 = 10 rad/s
+    angle = np.unwrap(result.links["3"]["angle"])
+    rate = np.gradient(angle, dt)
+    np.testing.assert_allclose(rate[1:-1], result.links["3"]["omega"][1:-1], atol=2e-3)
+
+
+def test_a_full_turn_of_a_non_grashof_linkage_stops_at_the_pose_that_cannot_close():
+    text = CRANK_ROCKER.replace("point C 0.3 0.3", "point C 0.3 0.1")
+    with pytest.raises(AssemblyError, match=r"II\(2,3\)"):
+        sweep(plan_of(text), steps=36)
+
+
+def test_csv_has_one_row_per_pose(tmp_path):
+    out = tmp_path / "sweep.csv"
+    path = tmp_path / "m.edges"
+    path.write_text(CRANK_ROCKER)
+    assert main(["sweep", str(path), "--steps", "12", "--csv", str(out)]) == 0
+    rows = list(csv.reader(io.StringIO(out.read_text())))
+    assert len(rows) == 13
+    header = rows[0]
+    assert "3.omega" in header and "C.velocity.x" in header
+    omega = [float(r[header.index("1.omega")]) for r in rows[1:]]
+    assert omega == [10.0] * 12

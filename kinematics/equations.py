@@ -12,16 +12,17 @@ ANGLE   1     θ_a − θ_b = 0 (a prismatic pair locks the relative rotation)
 SLIDE   1     (R(θ_a)·n)·(p_b − p_a) = 0 (n ⊥ the slide direction at the sketch)
 ======  ====  ===============================================================
 
-For each equation :func:`evaluate` gives the residual Φ, the partial
-derivatives with respect to ``(x, y, θ)`` of each link, and the term
-``(dJ/dt)·q̇`` of the acceleration equation ``J·q̈ = −(dJ/dt)·q̇``, which holds
-the centripetal and Coriolis parts.
+:func:`evaluate` gives, for many poses at once (arrays with a leading pose
+axis), the residual Φ, the partial derivatives with respect to ``(x, y, θ)``
+of each link, and the term ``(dJ/dt)·q̇`` of the acceleration equation
+``J·q̈ = −(dJ/dt)·q̇``, which holds the centripetal and Coriolis parts.
 
 >>> import numpy as np
 >>> eq = Equation("HINGE", "1", "2", np.array([1.0, 0.0]))
->>> phi, ja, jb, bias = evaluate(eq, np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3))
->>> phi.tolist(), ja.tolist()
-([0.0, 0.0], [[1.0, 0.0, 0.0], [0.0, 1.0, 1.0]])
+>>> z = np.zeros((1, 3))
+>>> phi, ja, jb, bias = evaluate(eq, z, z, z, z)
+>>> phi.tolist(), (ja[0] + 0.0).tolist()
+([[0.0, 0.0]], [[1.0, 0.0, 0.0], [0.0, 1.0, 1.0]])
 """
 
 from __future__ import annotations
@@ -31,15 +32,29 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Equation", "evaluate", "rotate"]
-
-_J = np.array([[0.0, -1.0], [1.0, 0.0]])
+__all__ = ["Equation", "evaluate", "rotate", "rotate_many"]
 
 
 def rotate(theta: float, v: np.ndarray) -> np.ndarray:
-    """``R(θ)·v``."""
+    """``R(θ)·v`` for one angle."""
     c, s = math.cos(theta), math.sin(theta)
     return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+
+
+def rotate_many(theta: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """``R(θ_k)·v`` for an array of angles (shape (N,)); ``v`` shape (2,) or (N, 2)."""
+    c, s = np.cos(theta), np.sin(theta)
+    vx, vy = (v[..., 0], v[..., 1])
+    return np.stack([c * vx - s * vy, s * vx + c * vy], axis=-1)
+
+
+def _perp(v: np.ndarray) -> np.ndarray:
+    """``J·v``: v turned by +90°."""
+    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
+
+
+def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return np.einsum("...i,...i->...", a, b)
 
 
 @dataclass(frozen=True)
@@ -64,34 +79,39 @@ class Equation:
 def evaluate(
     eq: Equation, qa: np.ndarray, qb: np.ndarray, va: np.ndarray, vb: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """``(Φ, ∂Φ/∂q_a, ∂Φ/∂q_b, (dJ/dt)·q̇)`` at poses ``qa, qb`` and velocities ``va, vb``."""
-    c = eq.point
+    """``(Φ, ∂Φ/∂q_a, ∂Φ/∂q_b, (dJ/dt)·q̇)`` for poses ``qa, qb`` (N, 3), velocities ``va, vb``.
+
+    Shapes: Φ and the bias (N, size), the partials (N, size, 3).
+    """
+    n = qa.shape[0]
     if eq.kind == "ANGLE":
-        phi = np.array([qa[2] - qb[2]])
-        return phi, np.array([[0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, -1.0]]), np.zeros(1)
-    ra = rotate(qa[2], c)
-    rb = rotate(qb[2], c)
-    pa = qa[:2] + ra
-    pb = qb[:2] + rb
+        phi = (qa[:, 2] - qb[:, 2])[:, None]
+        ja = np.broadcast_to(np.array([[[0.0, 0.0, 1.0]]]), (n, 1, 3))
+        jb = np.broadcast_to(np.array([[[0.0, 0.0, -1.0]]]), (n, 1, 3))
+        return phi, ja, jb, np.zeros((n, 1))
+    ra = rotate_many(qa[:, 2], eq.point)
+    rb = rotate_many(qb[:, 2], eq.point)
+    pa = qa[:, :2] + ra
+    pb = qb[:, :2] + rb
+    wa, wb = va[:, 2:3], vb[:, 2:3]
     if eq.kind == "HINGE":
-        phi = pa - pb
-        ja = np.column_stack([np.eye(2), _J @ ra])
-        jb = -np.column_stack([np.eye(2), _J @ rb])
-        bias = -(va[2] ** 2) * ra + vb[2] ** 2 * rb
-        return phi, ja, jb, bias
+        eye = np.broadcast_to(np.eye(2), (n, 2, 2))
+        ja = np.concatenate([eye, _perp(ra)[:, :, None]], axis=2)
+        jb = -np.concatenate([eye, _perp(rb)[:, :, None]], axis=2)
+        bias = -(wa**2) * ra + wb**2 * rb
+        return pa - pb, ja, jb, bias
     # SLIDE: the guide turns with link a
-    n = rotate(qa[2], eq.normal)
-    jn = _J @ n
+    nrm = rotate_many(qa[:, 2], eq.normal)
+    jn = _perp(nrm)
     d = pb - pa
-    phi = np.array([n @ d])
-    ja = np.array([[-n[0], -n[1], jn @ d - n @ (_J @ ra)]])
-    jb = np.array([[n[0], n[1], n @ (_J @ rb)]])
-    d_dot = vb[:2] + vb[2] * (_J @ rb) - va[:2] - va[2] * (_J @ ra)
-    bias = np.array(
-        [
-            -(va[2] ** 2) * (n @ d)
-            + 2.0 * va[2] * (jn @ d_dot)
-            + n @ (-(vb[2] ** 2) * rb + va[2] ** 2 * ra)
-        ]
-    )
+    phi = _dot(nrm, d)[:, None]
+    ja = np.stack([-nrm[:, 0], -nrm[:, 1], _dot(jn, d) - _dot(nrm, _perp(ra))], axis=1)[:, None]
+    jb = np.stack([nrm[:, 0], nrm[:, 1], _dot(nrm, _perp(rb))], axis=1)[:, None]
+    d_dot = vb[:, :2] + wb * _perp(rb) - va[:, :2] - wa * _perp(ra)
+    w_a, w_b = wa[:, 0], wb[:, 0]
+    bias = (
+        -(w_a**2) * _dot(nrm, d)
+        + 2.0 * w_a * _dot(jn, d_dot)
+        + _dot(nrm, -(w_b[:, None] ** 2) * rb + (w_a[:, None] ** 2) * ra)
+    )[:, None]
     return phi, ja, jb, bias

@@ -48,18 +48,31 @@ class DriverStep:
 
 @dataclass(frozen=True)
 class GroupStep:
-    """One Assur group to solve: its links and the equations of its pairs."""
+    """One step of the solve: an Assur group's links and the equations of its pairs.
 
-    group: AssurGroup
+    A link set aside as redundant by the structural analysis (a third
+    parallel crank) is a step of its own with ``group`` None: its pairs give
+    more equations than it has freedoms, all consistent, solved in the
+    least-squares sense.
+    """
+
+    group: AssurGroup | None
     equations: tuple[Equation, ...]
+    redundant_link: str = ""
 
     @property
     def links(self) -> tuple[str, ...]:
-        return self.group.links
+        return self.group.links if self.group is not None else (self.redundant_link,)
 
     @property
     def label(self) -> str:
+        if self.group is None:
+            return f"redundant link {self.redundant_link}"
         return self.group.label
+
+    @property
+    def kind(self) -> str | None:
+        return self.group.kind if self.group is not None else None
 
 
 @dataclass(frozen=True)
@@ -144,6 +157,19 @@ def make_plan(report: StructuralReport) -> SolvePlan:
             equations.append(Equation("ANGLE", a, b))
             equations.append(Equation("SLIDE", a, b, c, np.array([-u[1], u[0]])))
         steps.append(GroupStep(group, tuple(equations)))
+    for link in report.decomposition.removed_links:
+        equations = []
+        for pair in m.pairs_of(link):
+            other = pair.other(link)
+            if pair.kind is PairKind.R:
+                c = _xy(m, pair.point, f"pair {pair.label}", problems)
+                equations.append(Equation("HINGE", link, other, c))
+            elif pair.kind is PairKind.P:
+                u = _unit(pair.angle_deg)
+                c = _xy(m, pair.point, f"pair {pair.label}", problems)
+                equations.append(Equation("ANGLE", link, other))
+                equations.append(Equation("SLIDE", link, other, c, np.array([-u[1], u[0]])))
+        steps.append(GroupStep(None, tuple(equations), link))
     if problems:
         raise EdgeListError(m.source, problems)
     points: dict[str, tuple[str, np.ndarray]] = {}

@@ -1,15 +1,17 @@
-"""Positions, velocities and accelerations at a pose, group by group from the drivers.
+"""Positions, velocities and accelerations, group by group from the drivers, for many poses.
 
 Each link's state is ``(x, y, θ)``: the displacement and rotation of its frame
-from the sketch pose (where every link is at ``(0, 0, 0)``). The drivers are
-placed from their input; then each Assur group, in solve order, is
+from the sketch pose (where every link is at ``(0, 0, 0)``). For every pose
+the drivers are placed from their input; then each Assur group, in solve
+order, is
 
-* positioned by Newton's method on its own equations, started from the
-  previous pose (the sketch by default), which keeps the sketch's assembly
-  mode;
+* positioned: RRR and RRP dyads in closed form, vectorised over all poses,
+  with the sketch's assembly mode (the sign of the square root), other groups
+  by Newton's method on their own equations, started from the previous pose
+  (the sketch for the first);
 * given its velocities from ``J_g·q̇_g = −J_k·q̇_k`` (``k``: the known links its
-  external pairs touch);
-* given its accelerations from ``J_g·q̈_g = −J_k·q̈_k − (dJ/dt)·q̇``.
+  external pairs touch) and its accelerations from
+  ``J_g·q̈_g = −J_k·q̈_k − (dJ/dt)·q̇``, as batched linear solves.
 
 A group that cannot be assembled raises :class:`AssemblyError`; one whose
 Jacobian loses rank (a dead centre) raises :class:`SingularPoseError`. Both
@@ -27,6 +29,7 @@ name the group and the input; nothing is returned as NaN.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -34,20 +37,22 @@ from types import MappingProxyType
 import numpy as np
 
 from structure.errors import MechanismError
+from structure.model import PairKind
 
-from .equations import evaluate, rotate
+from .equations import evaluate, rotate_many
 from .plan import GroupStep, SolvePlan
 
 __all__ = [
     "AssemblyError",
     "KinematicState",
     "LinkState",
+    "Motion",
     "PointState",
     "SingularPoseError",
     "solve_pose",
+    "solve_poses",
 ]
 
-_J = np.array([[0.0, -1.0], [1.0, 0.0]])
 _MAX_NEWTON = 60
 _SINGULAR = 1e-6  # Newton stops within ~1e-7 of a double root, so test above that
 
@@ -68,6 +73,24 @@ class SingularPoseError(MechanismError):
         self.group = group
         self.pose = pose
         super().__init__(message)
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Arrays over poses: ``q``, ``qd``, ``qdd`` per link (shape (N, 3)), and the inputs."""
+
+    inputs: np.ndarray
+    q: Mapping[str, np.ndarray]
+    qd: Mapping[str, np.ndarray]
+    qdd: Mapping[str, np.ndarray]
+
+    def point(self, link: str, c: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Position, velocity, acceleration (each (N, 2)) of sketch point ``c`` on ``link``."""
+        q, v, a = self.q[link], self.qd[link], self.qdd[link]
+        r = rotate_many(q[:, 2], c)
+        jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
+        w, e = v[:, 2:3], a[:, 2:3]
+        return q[:, :2] + r, v[:, :2] + w * jr, a[:, :2] + e * jr - w**2 * r
 
 
 @dataclass(frozen=True)
@@ -111,114 +134,283 @@ class KinematicState:
     inputs: tuple[float, ...]
 
 
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.flags.writeable = False
-    return a
+def _fmt(inputs: np.ndarray) -> str:
+    return ", ".join(f"{x:.6g}" for x in np.atleast_1d(inputs))
 
 
-def _place_drivers(
-    plan: SolvePlan, inputs: tuple[float, ...], q: dict, qd: dict, qdd: dict
-) -> None:
-    for d, value in zip(plan.drivers, inputs, strict=True):
+def _place_drivers(plan: SolvePlan, inputs: np.ndarray, q: dict, qd: dict, qdd: dict) -> None:
+    n = inputs.shape[0]
+    for k, d in enumerate(plan.drivers):
+        value = inputs[:, k]
         if d.kind == "R":
             # turn by `value` about the pivot: x = c − R(φ)·c keeps the pivot in place
-            q[d.link] = np.array([*(d.pivot - rotate(value, d.pivot)), value])
-            r = rotate(value, d.pivot)
-            qd[d.link] = np.array([*(-d.speed * (_J @ r)), d.speed])
-            qdd[d.link] = np.array([*(-d.acceleration * (_J @ r) + d.speed**2 * r), d.acceleration])
+            r = rotate_many(value, d.pivot)
+            jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
+            q[d.link] = np.column_stack([d.pivot - r, value])
+            qd[d.link] = np.column_stack([-d.speed * jr, np.full(n, d.speed)])
+            qdd[d.link] = np.column_stack(
+                [-d.acceleration * jr + d.speed**2 * r, np.full(n, d.acceleration)]
+            )
         else:
-            q[d.link] = np.array([*(value * d.direction), 0.0])
-            qd[d.link] = np.array([*(d.speed * d.direction), 0.0])
-            qdd[d.link] = np.array([*(d.acceleration * d.direction), 0.0])
+            q[d.link] = np.column_stack([np.outer(value, d.direction), np.zeros(n)])
+            qd[d.link] = np.column_stack([np.outer(np.full(n, d.speed), d.direction), np.zeros(n)])
+            qdd[d.link] = np.column_stack(
+                [np.outer(np.full(n, d.acceleration), d.direction), np.zeros(n)]
+            )
 
 
 def _system(
-    step: GroupStep,
-    q: dict,
-    qd: dict,
-    index: dict[str, int],
-    zero: np.ndarray,
+    step: GroupStep, q: Mapping, v: Mapping, n: int
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Residual, group Jacobian, known-link velocity terms and (dJ/dt)·q̇ of a group."""
-    n = 3 * len(step.links)
-    phi = np.zeros(n)
-    jac = np.zeros((n, n))
-    known = np.zeros(n)
-    bias = np.zeros(n)
+    """Residual (N, m), group Jacobian (N, m, m), known-link terms J_k·v_k and (dJ/dt)·v."""
+    index = {link: i for i, link in enumerate(step.links)}
+    m = 3 * len(step.links)
+    rows_total = sum(eq.size for eq in step.equations)
+    zero = np.zeros((n, 3))
+    phi = np.zeros((n, rows_total))
+    jac = np.zeros((n, rows_total, m))
+    known = np.zeros((n, rows_total))
+    bias = np.zeros((n, rows_total))
     row = 0
     for eq in step.equations:
         qa, qb = q.get(eq.a, zero), q.get(eq.b, zero)
-        va, vb = qd.get(eq.a, zero), qd.get(eq.b, zero)
+        va, vb = v.get(eq.a, zero), v.get(eq.b, zero)
         f, ja, jb, g = evaluate(eq, qa, qb, va, vb)
         rows = slice(row, row + eq.size)
-        phi[rows] = f
-        bias[rows] = g
-        for link, part, v in ((eq.a, ja, va), (eq.b, jb, vb)):
+        phi[:, rows] = f
+        bias[:, rows] = g
+        for link, part, vel in ((eq.a, ja, va), (eq.b, jb, vb)):
             k = index.get(link)
             if k is None:
-                known[rows] += part @ v
+                known[:, rows] += np.einsum("nij,nj->ni", part, vel)
             else:
-                jac[rows, 3 * k : 3 * k + 3] += part
+                jac[:, rows, 3 * k : 3 * k + 3] += part
         row += eq.size
     return phi, jac, known, bias
 
 
 def _scaled(jac: np.ndarray, length: float) -> np.ndarray:
     scaled = jac.copy()
-    scaled[:, 2::3] /= length
+    scaled[..., 2::3] /= length
     return scaled
 
 
-def _solve_group(step: GroupStep, plan: SolvePlan, q: dict, inputs: tuple[float, ...]) -> None:
-    index = {link: i for i, link in enumerate(step.links)}
-    zero = np.zeros(3)
+def _newton(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -> None:
+    """Newton on one pose (arrays of one row) from the current ``q`` of the group's links."""
     tol = 1e-13 * plan.length
+    norm = math.inf
     for _ in range(_MAX_NEWTON):
-        phi, jac, _, _ = _system(step, q, {}, index, zero)
+        phi, jac, _, _ = _system(step, q, {}, 1)
         norm = float(np.linalg.norm(phi))
         if norm <= tol:
-            break
-        try:
-            dz = np.linalg.lstsq(_scaled(jac, plan.length), -phi, rcond=None)[0]
-        except np.linalg.LinAlgError as exc:  # pragma: no cover - lstsq rarely fails
-            raise AssemblyError(str(exc), step.label, inputs) from exc
+            return
+        dz = np.linalg.lstsq(_scaled(jac, plan.length)[0], -phi[0], rcond=None)[0]
         dz[2::3] /= plan.length
-        step_size = 1.0
         base = {link: q[link].copy() for link in step.links}
+        step_size = 1.0
         while True:
-            for link, i in index.items():
+            for i, link in enumerate(step.links):
                 q[link] = base[link] + step_size * dz[3 * i : 3 * i + 3]
-            trial = float(np.linalg.norm(_system(step, q, {}, index, zero)[0]))
+            trial = float(np.linalg.norm(_system(step, q, {}, 1)[0]))
             if trial < norm or step_size < 1e-6:
                 break
             step_size /= 2
-    else:
+    if norm > 1e-9 * plan.length:
         raise AssemblyError(
             f"group {step.label} cannot be assembled at input {_fmt(inputs)}: its pairs do not "
             f"close (residual {norm:.3g} m after {_MAX_NEWTON} Newton steps)",
             step.label,
-            inputs,
-        )
-    phi, jac, _, _ = _system(step, q, {}, index, zero)
-    if float(np.linalg.norm(phi)) > 1e-9 * plan.length:
-        raise AssemblyError(
-            f"group {step.label} cannot be assembled at input {_fmt(inputs)}",
-            step.label,
-            inputs,
-        )
-    s = np.linalg.svd(_scaled(jac, plan.length), compute_uv=False)
-    if s[-1] <= _SINGULAR * s[0]:
-        raise SingularPoseError(
-            f"group {step.label} is at a dead centre at input {_fmt(inputs)}: its Jacobian "
-            f"loses rank (σ_min/σ_max = {s[-1] / s[0]:.2g}; transmission angle 0° or 180°)",
-            step.label,
-            inputs,
+            tuple(np.atleast_1d(inputs)),
         )
 
 
-def _fmt(inputs: tuple[float, ...]) -> str:
-    return ", ".join(f"{x:.6g}" for x in inputs)
+def _external(step: GroupStep, link: str, kind: PairKind):
+    pairs = step.group.external_pairs if step.group is not None else ()
+    return [p for p in pairs if p.links[0] == link and p.kind is kind]
+
+
+def _sketch_angle(v: np.ndarray) -> float:
+    return math.atan2(float(v[1]), float(v[0]))
+
+
+def _world(q: Mapping, link: str, c: np.ndarray, n: int) -> np.ndarray:
+    if link not in q:
+        return np.broadcast_to(c, (n, 2)).copy()
+    return q[link][:, :2] + rotate_many(q[link][:, 2], c)
+
+
+def _not_assembled(step: GroupStep, inputs: np.ndarray, bad: np.ndarray) -> AssemblyError:
+    k = int(np.argmax(bad))
+    return AssemblyError(
+        f"group {step.label} cannot be assembled at input {_fmt(inputs[k])}: "
+        "the dyad cannot close (its links are too short for the distance to span)",
+        step.label,
+        tuple(np.atleast_1d(inputs[k])),
+    )
+
+
+def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -> bool:
+    """Place an RRR or RRP dyad for every pose at once; False when no closed form applies."""
+    g = step.group
+    if g is None or g.kind not in ("RRR", "RRP") or len(step.links) != 2:
+        return False
+    m = plan.mechanism
+    n = inputs.shape[0]
+
+    def point(name: str | None) -> np.ndarray | None:
+        xy = m.coordinates(name) if name is not None else None
+        return None if xy is None else np.array(xy, dtype=float)
+
+    (mid,) = g.internal_pairs
+    c = point(mid.point)
+    if c is None:
+        return False
+    if g.kind == "RRR":
+        (l1, l2) = step.links
+        e1, e2 = _external(step, l1, PairKind.R), _external(step, l2, PairKind.R)
+        if len(e1) != 1 or len(e2) != 1:
+            return False
+        b, d = point(e1[0].point), point(e2[0].point)
+        if b is None or d is None:
+            return False
+        s0 = np.sign((d - b)[0] * (c - b)[1] - (d - b)[1] * (c - b)[0])
+        if s0 == 0:
+            return False
+        r1, r2 = float(np.hypot(*(c - b))), float(np.hypot(*(c - d)))
+        bw, dw = _world(q, e1[0].links[1], b, n), _world(q, e2[0].links[1], d, n)
+        e = dw - bw
+        dist = np.hypot(e[:, 0], e[:, 1])
+        a = (r1**2 - r2**2 + dist**2) / (2 * dist)
+        h2 = r1**2 - a**2
+        bad = h2 < -1e-12 * plan.length**2
+        if bad.any():
+            raise _not_assembled(step, inputs, bad)
+        u = e / dist[:, None]
+        h = s0 * np.sqrt(np.maximum(h2, 0.0))
+        cw = bw + a[:, None] * u + h[:, None] * np.stack([-u[:, 1], u[:, 0]], axis=1)
+        _place(q, l1, bw, cw, b, c)
+        _place(q, l2, dw, cw, d, c)
+        return True
+    # RRP: the rod has the external R, the slider the external P
+    rod = next((x for x in step.links if _external(step, x, PairKind.R)), None)
+    slider = next((x for x in step.links if _external(step, x, PairKind.P)), None)
+    if rod is None or slider is None or rod == slider:
+        return False
+    (er,) = _external(step, rod, PairKind.R)
+    (ep,) = _external(step, slider, PairKind.P)
+    b = point(er.point)
+    pair = m.pair(ep.pair)
+    if b is None or pair.angle_deg is None:
+        return False
+    u0 = np.array([math.cos(pair.angle), math.sin(pair.angle)])  # type: ignore[arg-type]
+    w0 = c - b
+    sigma = np.sign(u0 @ w0)
+    if sigma == 0:
+        return False
+    guide = ep.links[1]
+    theta = q[guide][:, 2] if guide in q else np.zeros(n)
+    bw = _world(q, er.links[1], b, n)
+    origin = _world(q, guide, c, n)  # where c would be if it were fixed to the guide
+    u = rotate_many(theta, u0)
+    w = origin - bw
+    uw = np.einsum("ij,ij->i", u, w)
+    disc = uw**2 - np.einsum("ij,ij->i", w, w) + float(w0 @ w0)
+    bad = disc < -1e-12 * plan.length**2
+    if bad.any():
+        raise _not_assembled(step, inputs, bad)
+    s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
+    cw = origin + s[:, None] * u
+    _place(q, rod, bw, cw, b, c)
+    q[slider] = np.column_stack([cw - rotate_many(theta, c), theta])
+    return True
+
+
+def _place(q: dict, link: str, pw: np.ndarray, cw: np.ndarray, p: np.ndarray, c: np.ndarray):
+    """Pose of a link whose sketch points p, c are at world points pw, cw."""
+    theta = np.arctan2(cw[:, 1] - pw[:, 1], cw[:, 0] - pw[:, 0]) - _sketch_angle(c - p)
+    theta = np.unwrap((theta + math.pi) % (2 * math.pi) - math.pi)
+    q[link] = np.column_stack([pw - rotate_many(theta, p), theta])
+
+
+def solve_poses(
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None = None,
+) -> Motion:
+    """Positions, velocities and accelerations for every row of ``inputs`` (N, drivers).
+
+    Rows are driver rotations (rad) or displacements (m) from the sketch.
+    ``guess`` holds link poses (3,) to start Newton from at the first row.
+
+    Raises
+    ------
+    AssemblyError
+        A group does not close at some input (the first one is named).
+    SingularPoseError
+        A group is at a dead centre at some input.
+    """
+    inputs = np.atleast_2d(np.asarray(inputs, dtype=float))
+    if inputs.shape[1] != len(plan.drivers):
+        inputs = inputs.reshape(-1, len(plan.drivers))
+    n = inputs.shape[0]
+    ground = plan.mechanism.ground
+    q: dict[str, np.ndarray] = {}
+    qd: dict[str, np.ndarray] = {}
+    qdd: dict[str, np.ndarray] = {}
+    _place_drivers(plan, inputs, q, qd, qdd)
+    for step in plan.steps:
+        if not _closed_form(step, plan, q, inputs):
+            rows: dict[str, list[np.ndarray]] = {link: [] for link in step.links}
+            previous = {
+                link: np.array(guess[link], dtype=float) if guess and link in guess else np.zeros(3)
+                for link in step.links
+            }
+            for k in range(n):
+                one = {link: value[k : k + 1] for link, value in q.items()}
+                for link in step.links:
+                    one[link] = previous[link][None, :].copy()
+                _newton(step, plan, one, inputs[k])
+                for link in step.links:
+                    previous[link] = one[link][0]
+                    rows[link].append(one[link][0])
+            for link in step.links:
+                q[link] = np.array(rows[link])
+        _, jac, known_v, _ = _system(step, q, qd, n)
+        s = np.linalg.svd(_scaled(jac, plan.length), compute_uv=False)
+        ratio = s[:, -1] / s[:, 0]
+        if step.group is not None and (ratio <= _SINGULAR).any():
+            k = int(np.argmax(ratio <= _SINGULAR))
+            raise SingularPoseError(
+                f"group {step.label} is at a dead centre at input {_fmt(inputs[k])}: its "
+                f"Jacobian loses rank (σ_min/σ_max = {ratio[k]:.2g}; transmission angle "
+                "0° or 180°)",
+                step.label,
+                tuple(inputs[k]),
+            )
+        solve = np.linalg.solve if jac.shape[1] == jac.shape[2] else _least_squares
+        z_dot = solve(jac, -known_v[..., None])[..., 0]
+        for i, link in enumerate(step.links):
+            qd[link] = z_dot[:, 3 * i : 3 * i + 3]
+        _, _, known_a, _ = _system(step, q, qdd, n)
+        _, _, _, bias = _system(step, q, qd, n)
+        z_ddot = solve(jac, (-known_a - bias)[..., None])[..., 0]
+        for i, link in enumerate(step.links):
+            qdd[link] = z_ddot[:, 3 * i : 3 * i + 3]
+    zero = np.zeros((n, 3))
+    for table in (q, qd, qdd):
+        table.setdefault(ground, zero)
+    return Motion(inputs, MappingProxyType(q), MappingProxyType(qd), MappingProxyType(qdd))
+
+
+def _least_squares(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Batched least squares for the consistent, overdetermined rows of a redundant link."""
+    return np.linalg.pinv(jac) @ rhs
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, dtype=float)
+    a.flags.writeable = False
+    return a
 
 
 def solve_pose(
@@ -226,11 +418,7 @@ def solve_pose(
     inputs: tuple[float, ...] | None = None,
     guess: Mapping[str, np.ndarray] | None = None,
 ) -> KinematicState:
-    """Positions, velocities and accelerations at one input.
-
-    ``inputs`` holds one value per driver: its rotation (rad) or displacement
-    (m) from the sketch pose; default the sketch itself. ``guess`` holds link
-    poses to start Newton from (a previous pose in a sweep).
+    """Positions, velocities and accelerations at one input (default: the sketch).
 
     Raises
     ------
@@ -240,39 +428,17 @@ def solve_pose(
         A group is at a dead centre.
     """
     inputs = tuple(0.0 for _ in plan.drivers) if inputs is None else tuple(inputs)
+    motion = solve_poses(plan, np.array([inputs], dtype=float).reshape(1, -1), guess)
     m = plan.mechanism
-    zero = np.zeros(3)
-    q: dict[str, np.ndarray] = {m.ground: zero}
-    qd: dict[str, np.ndarray] = {m.ground: zero}
-    qdd: dict[str, np.ndarray] = {m.ground: zero}
-    _place_drivers(plan, inputs, q, qd, qdd)
-    for step in plan.steps:
-        for link in step.links:
-            q[link] = np.array(guess[link], dtype=float) if guess and link in guess else zero.copy()
-        _solve_group(step, plan, q, inputs)
-        index = {link: i for i, link in enumerate(step.links)}
-        _, jac, known_v, _ = _system(step, q, qd, index, zero)
-        z_dot = np.linalg.solve(jac, -known_v)
-        for link, i in index.items():
-            qd[link] = z_dot[3 * i : 3 * i + 3]
-        _, _, known_a, _ = _system(step, q, qdd, index, zero)
-        _, _, _, bias = _system(step, q, qd, index, zero)
-        z_ddot = np.linalg.solve(jac, -known_a - bias)
-        for link, i in index.items():
-            qdd[link] = z_ddot[3 * i : 3 * i + 3]
     links = {
-        link: LinkState(_frozen(q[link]), _frozen(qd[link]), _frozen(qdd[link]))
+        link: LinkState(
+            _frozen(motion.q[link][0]), _frozen(motion.qd[link][0]), _frozen(motion.qdd[link][0])
+        )
         for link in m.moving_links
-        if link in q
+        if link in motion.q
     }
     points = {}
     for name, (link, c) in plan.points.items():
-        x, v, a = q.get(link, zero), qd.get(link, zero), qdd.get(link, zero)
-        r = rotate(x[2], c)
-        points[name] = PointState(
-            link,
-            _frozen(x[:2] + r),
-            _frozen(v[:2] + v[2] * (_J @ r)),
-            _frozen(a[:2] + a[2] * (_J @ r) - v[2] ** 2 * r),
-        )
+        x, v, a = motion.point(link, c)
+        points[name] = PointState(link, _frozen(x[0]), _frozen(v[0]), _frozen(a[0]))
     return KinematicState(MappingProxyType(links), MappingProxyType(points), inputs)

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .plan import SolvePlan
-from .solve import solve_pose
+from .solve import solve_poses
 
 __all__ = ["Sweep", "sweep", "transmission_angle"]
 
@@ -85,12 +85,18 @@ def transmission_angle(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> float:
     return math.acos(max(-1.0, min(1.0, cos)))
 
 
+def _angles(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
+    u, v = c - b, c - d
+    cos = np.einsum("ij,ij->i", u, v) / (np.hypot(u[:, 0], u[:, 1]) * np.hypot(v[:, 0], v[:, 1]))
+    return np.arccos(np.clip(cos, -1.0, 1.0))
+
+
 def _rrr_pins(plan: SolvePlan) -> dict[str, tuple[str, str, str]]:
     """Point names (external, middle, external) of each RRR dyad with named pins."""
     out = {}
     for step in plan.steps:
         g = step.group
-        if g.kind != "RRR":
+        if g is None or g.kind != "RRR":
             continue
         ext = [p.point for p in g.external_pairs]
         mid = [p.point for p in g.internal_pairs]
@@ -116,45 +122,22 @@ def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -
     inputs = np.asarray(inputs, dtype=float)
     if inputs.ndim == 1:
         inputs = inputs[:, None]
-    n = inputs.shape[0]
-    states = []
-    guess = None
-    for k in range(n):
-        state = solve_pose(plan, tuple(inputs[k]), guess)
-        guess = {name: link.q for name, link in state.links.items()}
-        states.append(state)
-    links = (
-        {
-            name: {
-                "angle": np.array([s.links[name].angle for s in states]),
-                "omega": np.array([s.links[name].omega for s in states]),
-                "epsilon": np.array([s.links[name].epsilon for s in states]),
-            }
-            for name in states[0].links
+    motion = solve_poses(plan, inputs)
+    links = {
+        name: {
+            "angle": motion.q[name][:, 2],
+            "omega": motion.qd[name][:, 2],
+            "epsilon": motion.qdd[name][:, 2],
         }
-        if states
-        else {}
-    )
-    points = (
-        {
-            name: {
-                key: np.array([getattr(s.points[name], key) for s in states])
-                for key in ("position", "velocity", "acceleration")
-            }
-            for name in states[0].points
-        }
-        if states
-        else {}
-    )
+        for name in plan.mechanism.moving_links
+        if name in motion.q
+    }
+    points = {}
+    for name, (link, c) in plan.points.items():
+        x, v, a = motion.point(link, c)
+        points[name] = {"position": x, "velocity": v, "acceleration": a}
     transmission = {
-        label: np.array(
-            [
-                transmission_angle(
-                    points[b]["position"][k], points[c]["position"][k], points[d]["position"][k]
-                )
-                for k in range(n)
-            ]
-        )
+        label: _angles(points[b]["position"], points[c]["position"], points[d]["position"])
         for label, (b, c, d) in _rrr_pins(plan).items()
     }
     return Sweep(inputs, links, points, transmission)

@@ -118,7 +118,7 @@ def _kinematics(args: argparse.Namespace) -> int:
     out.append("")
     out.append("Solved in this order:")
     for i, step in enumerate(plan.steps, start=1):
-        kind = f" {step.group.kind}" if step.group.kind else ""
+        kind = f" {step.kind}" if step.kind else ""
         out.append(f"  {i}. {step.label}{kind}: links {', '.join(step.links)}")
     out.append("")
     out.append("Links (angle turned from the sketch):")

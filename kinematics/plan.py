@@ -17,7 +17,7 @@ its links and the equations of its pairs. Nothing is solved here.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
@@ -80,7 +80,9 @@ class SolvePlan:
     """Drivers, then groups in solve order, and the points to report.
 
     ``points`` maps a point name to the link that carries it and its sketch
-    coordinates; ``length`` is the sketch's size (for tolerances).
+    coordinates; ``length`` is the sketch's size (for tolerances); ``flip``
+    holds the labels of the dyads to assemble in the other mode than the
+    sketch's.
     """
 
     mechanism: Mechanism
@@ -88,6 +90,7 @@ class SolvePlan:
     steps: tuple[GroupStep, ...]
     points: Mapping[str, tuple[str, np.ndarray]]
     length: float
+    flip: frozenset[str] = frozenset()
 
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
@@ -107,13 +110,18 @@ def _unit(angle_deg: float | None) -> np.ndarray:
     return np.array([math.cos(t), math.sin(t)])
 
 
-def make_plan(report: StructuralReport) -> SolvePlan:
+def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     """The solve plan of a structural report whose mechanism has sketch coordinates.
+
+    ``flip`` names dyads (by label, e.g. ``'II(2,3)'``) to assemble in the
+    other mode than the sketch's.
 
     Raises
     ------
     EdgeListError
         A pair point without coordinates, or a P pair without ``angle=``.
+    ValueError
+        ``flip`` names a group that is not a dyad of the plan.
     """
     m = report.replaced
     problems: list[EdgeListProblem] = []
@@ -190,6 +198,17 @@ def make_plan(report: StructuralReport) -> SolvePlan:
             points[pt.name] = (pt.on, np.array([pt.x, pt.y]))
     coords = np.array([[p.x, p.y] for p in m.points.values()]) if m.points else np.zeros((1, 2))
     span = float(np.max(np.ptp(coords, axis=0))) if len(coords) > 1 else 1.0
+    dyads = {s.label for s in steps if s.group is not None and s.group.kind is not None}
+    unknown = set(flip) - dyads
+    if unknown:
+        raise ValueError(
+            f"cannot flip {', '.join(sorted(unknown))}: the dyads are {', '.join(sorted(dyads))}"
+        )
     return SolvePlan(
-        m, tuple(drivers), tuple(steps), MappingProxyType(points), span if span > 0 else 1.0
+        m,
+        tuple(drivers),
+        tuple(steps),
+        MappingProxyType(points),
+        span if span > 0 else 1.0,
+        frozenset(flip),
     )

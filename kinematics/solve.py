@@ -249,41 +249,79 @@ def _not_assembled(step: GroupStep, inputs: np.ndarray, bad: np.ndarray) -> Asse
     )
 
 
+def _direction(plan: SolvePlan, pair_id: int) -> np.ndarray | None:
+    pair = plan.mechanism.pair(pair_id)
+    if pair.angle is None:
+        return None
+    return np.array([math.cos(pair.angle), math.sin(pair.angle)])
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def _angle_of(q: Mapping, link: str, n: int) -> np.ndarray:
+    return q[link][:, 2] if link in q else np.zeros(n)
+
+
+def _solve2(
+    a: np.ndarray, b: np.ndarray, rhs: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Solve s·a + t·b = rhs for many poses (2-vectors); also the determinants."""
+    det = _cross(a, b)
+    safe = np.where(det == 0, 1.0, det)
+    return _cross(rhs, b) / safe, _cross(a, rhs) / safe, det
+
+
 def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -> bool:
-    """Place an RRR or RRP dyad for every pose at once; False when no closed form applies."""
+    """Place a dyad for every pose at once; False when no closed form applies.
+
+    The pairs fix the dyad as follows (``x_Y = x_X + s·R(θ_X)·u`` and
+    ``θ_Y = θ_X`` for a prismatic pair, a common point for a revolute pair):
+    RRR a circle–circle and RRP a circle–line intersection, RPR a circle in
+    the slide offset, PRP and RPP a 2×2 linear system. The root is the one of
+    the sketch (or the other, for a group in ``plan.flip``).
+    """
     g = step.group
-    if g is None or g.kind not in ("RRR", "RRP") or len(step.links) != 2:
+    if g is None or g.kind is None or len(step.links) != 2:
         return False
     m = plan.mechanism
     n = inputs.shape[0]
+    flip = -1.0 if g.label in plan.flip else 1.0
 
     def point(name: str | None) -> np.ndarray | None:
         xy = m.coordinates(name) if name is not None else None
         return None if xy is None else np.array(xy, dtype=float)
 
     (mid,) = g.internal_pairs
-    c = point(mid.point)
-    if c is None:
+    ext = {
+        x: g_pairs
+        for x in step.links
+        if (g_pairs := [p for p in g.external_pairs if p.links[0] == x])
+    }
+    if len(ext) != 2 or any(len(v) != 1 for v in ext.values()):
         return False
-    if g.kind == "RRR":
-        (l1, l2) = step.links
-        e1, e2 = _external(step, l1, PairKind.R), _external(step, l2, PairKind.R)
-        if len(e1) != 1 or len(e2) != 1:
+    (l1, l2) = step.links
+    e1, e2 = ext[l1][0], ext[l2][0]
+    kinds = (e1.kind.value, mid.kind.value, e2.kind.value)
+    if kinds in (("P", "R", "R"), ("P", "P", "R")):  # read it from the other end
+        l1, l2, e1, e2 = l2, l1, e2, e1
+        kinds = kinds[::-1]
+    tol = 1e-12 * plan.length**2
+    if kinds == ("R", "R", "R"):
+        b, c, d = point(e1.point), point(mid.point), point(e2.point)
+        if b is None or c is None or d is None:
             return False
-        b, d = point(e1[0].point), point(e2[0].point)
-        if b is None or d is None:
-            return False
-        s0 = np.sign((d - b)[0] * (c - b)[1] - (d - b)[1] * (c - b)[0])
+        s0 = flip * np.sign(_cross(d - b, c - b))
         if s0 == 0:
             return False
         r1, r2 = float(np.hypot(*(c - b))), float(np.hypot(*(c - d)))
-        bw, dw = _world(q, e1[0].links[1], b, n), _world(q, e2[0].links[1], d, n)
+        bw, dw = _world(q, e1.links[1], b, n), _world(q, e2.links[1], d, n)
         e = dw - bw
         dist = np.hypot(e[:, 0], e[:, 1])
         a = (r1**2 - r2**2 + dist**2) / (2 * dist)
         h2 = r1**2 - a**2
-        bad = h2 < -1e-12 * plan.length**2
-        if bad.any():
+        if (bad := h2 < -tol).any():
             raise _not_assembled(step, inputs, bad)
         u = e / dist[:, None]
         h = s0 * np.sqrt(np.maximum(h2, 0.0))
@@ -291,38 +329,82 @@ def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) 
         _place(q, l1, bw, cw, b, c)
         _place(q, l2, dw, cw, d, c)
         return True
-    # RRP: the rod has the external R, the slider the external P
-    rod = next((x for x in step.links if _external(step, x, PairKind.R)), None)
-    slider = next((x for x in step.links if _external(step, x, PairKind.P)), None)
-    if rod is None or slider is None or rod == slider:
-        return False
-    (er,) = _external(step, rod, PairKind.R)
-    (ep,) = _external(step, slider, PairKind.P)
-    b = point(er.point)
-    pair = m.pair(ep.pair)
-    if b is None or pair.angle_deg is None:
-        return False
-    u0 = np.array([math.cos(pair.angle), math.sin(pair.angle)])  # type: ignore[arg-type]
-    w0 = c - b
-    sigma = np.sign(u0 @ w0)
-    if sigma == 0:
-        return False
-    guide = ep.links[1]
-    theta = q[guide][:, 2] if guide in q else np.zeros(n)
-    bw = _world(q, er.links[1], b, n)
-    origin = _world(q, guide, c, n)  # where c would be if it were fixed to the guide
-    u = rotate_many(theta, u0)
-    w = origin - bw
-    uw = np.einsum("ij,ij->i", u, w)
-    disc = uw**2 - np.einsum("ij,ij->i", w, w) + float(w0 @ w0)
-    bad = disc < -1e-12 * plan.length**2
-    if bad.any():
-        raise _not_assembled(step, inputs, bad)
-    s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
-    cw = origin + s[:, None] * u
-    _place(q, rod, bw, cw, b, c)
-    q[slider] = np.column_stack([cw - rotate_many(theta, c), theta])
-    return True
+    if kinds == ("R", "R", "P"):  # rod l1, slider l2 on the guide of e2's known link
+        b, c, u0 = point(e1.point), point(mid.point), _direction(plan, e2.pair)
+        if b is None or c is None or u0 is None:
+            return False
+        sigma = flip * np.sign(u0 @ (c - b))
+        if sigma == 0:
+            return False
+        guide = e2.links[1]
+        theta = _angle_of(q, guide, n)
+        bw = _world(q, e1.links[1], b, n)
+        origin = _world(q, guide, c, n)  # where c would be if it were fixed to the guide
+        u = rotate_many(theta, u0)
+        w = origin - bw
+        uw = np.einsum("ij,ij->i", u, w)
+        disc = uw**2 - np.einsum("ij,ij->i", w, w) + float((c - b) @ (c - b))
+        if (bad := disc < -tol).any():
+            raise _not_assembled(step, inputs, bad)
+        s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
+        cw = origin + s[:, None] * u
+        _place(q, l1, bw, cw, b, c)
+        q[l2] = np.column_stack([cw - rotate_many(theta, c), theta])
+        return True
+    if kinds == ("R", "P", "R"):  # both links turn together; the slide spans the pins
+        b, d, u0 = point(e1.point), point(e2.point), _direction(plan, mid.pair)
+        if b is None or d is None or u0 is None:
+            return False
+        w = d - b
+        sigma = flip * np.sign(u0 @ w)
+        if sigma == 0:
+            return False
+        bw, dw = _world(q, e1.links[1], b, n), _world(q, e2.links[1], d, n)
+        e = dw - bw
+        uw = float(u0 @ w)
+        disc = uw**2 - float(w @ w) + np.einsum("ij,ij->i", e, e)
+        if (bad := disc < -tol).any():
+            raise _not_assembled(step, inputs, bad)
+        s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
+        span = w[None, :] + s[:, None] * u0[None, :]
+        theta = np.arctan2(e[:, 1], e[:, 0]) - np.arctan2(span[:, 1], span[:, 0])
+        theta = np.unwrap((theta + math.pi) % (2 * math.pi) - math.pi)
+        q[l1] = np.column_stack([bw - rotate_many(theta, b), theta])
+        q[l2] = np.column_stack([dw - rotate_many(theta, d), theta])
+        return True
+    if kinds == ("P", "R", "P"):  # each slider keeps its guide's angle; the pin joins them
+        c, u1, u2 = point(mid.point), _direction(plan, e1.pair), _direction(plan, e2.pair)
+        if c is None or u1 is None or u2 is None:
+            return False
+        k1, k2 = e1.links[1], e2.links[1]
+        t1, t2 = _angle_of(q, k1, n), _angle_of(q, k2, n)
+        big_u1, big_u2 = rotate_many(t1, u1), rotate_many(t2, u2)
+        gap = _world(q, k2, c, n) - _world(q, k1, c, n)
+        s1, s2, det = _solve2(big_u1, -big_u2, gap)
+        if (bad := np.abs(det) < 1e-12).any():
+            raise _not_assembled(step, inputs, bad)
+        x1 = (q[k1][:, :2] if k1 in q else 0.0) + s1[:, None] * big_u1
+        x2 = (q[k2][:, :2] if k2 in q else 0.0) + s2[:, None] * big_u2
+        q[l1] = np.column_stack([np.broadcast_to(x1, (n, 2)), t1])
+        q[l2] = np.column_stack([np.broadcast_to(x2, (n, 2)), t2])
+        return True
+    if kinds == ("R", "P", "P"):  # the guides fix both angles; the pin fixes l1
+        b, um, u2 = point(e1.point), _direction(plan, mid.pair), _direction(plan, e2.pair)
+        if b is None or um is None or u2 is None:
+            return False
+        k2 = e2.links[1]
+        theta = _angle_of(q, k2, n)
+        bw = _world(q, e1.links[1], b, n)
+        x1 = bw - rotate_many(theta, b)
+        big_um, big_u2 = rotate_many(theta, um), rotate_many(theta, u2)
+        xk2 = q[k2][:, :2] if k2 in q else np.zeros((n, 2))
+        sm, _, det = _solve2(big_um, -big_u2, xk2 - x1)
+        if (bad := np.abs(det) < 1e-12).any():
+            raise _not_assembled(step, inputs, bad)
+        q[l1] = np.column_stack([x1, theta])
+        q[l2] = np.column_stack([x1 + sm[:, None] * big_um, theta])
+        return True
+    return False
 
 
 def _place(q: dict, link: str, pw: np.ndarray, cw: np.ndarray, p: np.ndarray, c: np.ndarray):
@@ -330,6 +412,29 @@ def _place(q: dict, link: str, pw: np.ndarray, cw: np.ndarray, p: np.ndarray, c:
     theta = np.arctan2(cw[:, 1] - pw[:, 1], cw[:, 0] - pw[:, 0]) - _sketch_angle(c - p)
     theta = np.unwrap((theta + math.pi) % (2 * math.pi) - math.pi)
     q[link] = np.column_stack([pw - rotate_many(theta, p), theta])
+
+
+_CONTINUATION_STEP = 0.05  # rad for a turning driver, fraction of the sketch for a sliding one
+
+
+def _needs_continuation(plan: SolvePlan) -> bool:
+    return any(step.group is None or step.group.kind is None for step in plan.steps)
+
+
+def _densified(plan: SolvePlan, inputs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Inputs with intermediate rows from the sketch on, so Newton never jumps far."""
+    scale = np.array([1.0 if d.kind == "R" else plan.length for d in plan.drivers])
+    rows: list[np.ndarray] = []
+    picks: list[int] = []
+    previous = np.zeros(inputs.shape[1])
+    for row in inputs:
+        jump = float(np.max(np.abs(row - previous) / scale)) if len(scale) else 0.0
+        pieces = max(1, math.ceil(jump / _CONTINUATION_STEP))
+        for k in range(1, pieces + 1):
+            rows.append(previous + (row - previous) * (k / pieces))
+        picks.append(len(rows) - 1)
+        previous = row
+    return np.array(rows), np.array(picks, dtype=int)
 
 
 def solve_poses(
@@ -340,7 +445,10 @@ def solve_poses(
     """Positions, velocities and accelerations for every row of ``inputs`` (N, drivers).
 
     Rows are driver rotations (rad) or displacements (m) from the sketch.
-    ``guess`` holds link poses (3,) to start Newton from at the first row.
+    Groups solved by Newton follow the inputs from the sketch on, with
+    intermediate poses where consecutive rows are far apart, so that they keep
+    the sketch's assembly mode. ``guess`` holds link poses (3,) to start Newton
+    from at the first row instead (no intermediate poses are added then).
 
     Raises
     ------
@@ -352,6 +460,22 @@ def solve_poses(
     inputs = np.atleast_2d(np.asarray(inputs, dtype=float))
     if inputs.shape[1] != len(plan.drivers):
         inputs = inputs.reshape(-1, len(plan.drivers))
+    if guess is None and _needs_continuation(plan):
+        dense, picks = _densified(plan, inputs)
+        if len(dense) > len(inputs):
+            motion = _solve_poses(plan, dense, None)
+            return Motion(
+                inputs,
+                MappingProxyType({k: v[picks] for k, v in motion.q.items()}),
+                MappingProxyType({k: v[picks] for k, v in motion.qd.items()}),
+                MappingProxyType({k: v[picks] for k, v in motion.qdd.items()}),
+            )
+    return _solve_poses(plan, inputs, guess)
+
+
+def _solve_poses(
+    plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None
+) -> Motion:
     n = inputs.shape[0]
     ground = plan.mechanism.ground
     q: dict[str, np.ndarray] = {}

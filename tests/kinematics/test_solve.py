@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from kinematics.plan import make_plan
-from kinematics.solve import AssemblyError, SingularPoseError, solve_pose
+from kinematics.solve import AssemblyError, SingularPoseError, solve_pose, solve_poses
 from structure.constraints import sketch_problems
 from structure.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
@@ -160,3 +160,42 @@ point D 0.4 0
     solve_pose(plan, (math.pi - 0.01,))  # close to it the group still assembles
     with pytest.raises(SingularPoseError, match=r"II\(2,3\).*dead centre"):
         solve_pose(plan, (math.pi,))
+
+
+@pytest.mark.parametrize("name", fixtures_with_sketch())
+def test_closed_form_dyads_agree_with_newton(name, monkeypatch):
+    import kinematics.solve as solve_module
+
+    plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
+    inputs = np.array([[0.1] * len(plan.drivers), [-0.1] * len(plan.drivers)])
+    try:
+        closed = solve_module.solve_poses(plan, inputs)
+    except AssemblyError:
+        pytest.skip("this linkage does not reach ±0.1 rad from its sketch")
+    monkeypatch.setattr(solve_module, "_closed_form", lambda *args: False)
+    newton = solve_module.solve_poses(plan, inputs)
+    for link in closed.q:
+        np.testing.assert_allclose(closed.q[link], newton.q[link], atol=1e-10)
+        np.testing.assert_allclose(closed.qd[link], newton.qd[link], atol=1e-8)
+        np.testing.assert_allclose(closed.qdd[link], newton.qdd[link], atol=1e-6)
+
+
+def test_flipping_a_dyad_assembles_its_mirror_image():
+    plan = make_plan(analyze(parse_edgelist(FOURBAR_2_4.strip().splitlines())), flip=["II(2,3)"])
+    c = solve_pose(plan).points["C"].position
+    # mirror of C = (0.4, 0.1) across the line B(0, 0.1)–D(0.4, −0.3)
+    b, d, c0 = np.array([0.0, 0.1]), np.array([0.4, -0.3]), np.array([0.4, 0.1])
+    u = (d - b) / np.linalg.norm(d - b)
+    mirror = b + 2 * ((c0 - b) @ u) * u - (c0 - b)
+    np.testing.assert_allclose(c, mirror, atol=1e-12)
+    with pytest.raises(ValueError, match="cannot flip"):
+        make_plan(analyze(parse_edgelist(FOURBAR_2_4.strip().splitlines())), flip=["II(9,9)"])
+
+
+def test_far_input_is_reached_by_continuation_in_the_sketch_mode():
+    # the triad is solved by Newton: one pose half a turn away must match the sweep's pose
+    plan = make_plan(analyze(read_edgelist(FIXTURES / "eightbar_triad.edges")))
+    direct = solve_pose(plan, (math.pi / 2,))
+    swept = solve_poses(plan, np.linspace(0, math.pi / 2, 200)[:, None])
+    for link, state in direct.links.items():
+        np.testing.assert_allclose(state.q, swept.q[link][-1], atol=1e-10)

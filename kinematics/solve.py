@@ -414,6 +414,83 @@ def _place(q: dict, link: str, pw: np.ndarray, cw: np.ndarray, p: np.ndarray, c:
     q[link] = np.column_stack([pw - rotate_many(theta, p), theta])
 
 
+_CHUNK = 64  # poses solved together by a batched Newton, from a predictor
+
+
+def _sequential(
+    step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, k: int, start: dict
+) -> dict[str, np.ndarray]:
+    """Newton on pose ``k`` alone, from ``start`` (link -> (3,))."""
+    one = {link: value[k : k + 1] for link, value in q.items()}
+    for link in step.links:
+        one[link] = start[link][None, :].copy()
+    _newton(step, plan, one, inputs[k])
+    return {link: one[link][0] for link in step.links}
+
+
+def _follow(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, start: dict) -> None:
+    """Solve a Newton group for every pose, following the inputs in order.
+
+    The first pose starts from ``start``; then chunks of poses start from a
+    linear extrapolation of the last two solutions and run one batched Newton
+    together. A chunk where any pose fails to converge, or lands farther from
+    its prediction than the step between poses allows (another assembly mode),
+    is redone pose by pose from the previous solution.
+    """
+    n = inputs.shape[0]
+    links = step.links
+    out = {link: np.zeros((n, 3)) for link in links}
+    first = _sequential(step, plan, q, inputs, 0, start)
+    for link in links:
+        out[link][0] = first[link]
+    k = 1
+    tol = 1e-13 * plan.length
+    while k < n:
+        stop = min(n, k + _CHUNK)
+        idx = np.arange(k, stop)
+        last = {link: out[link][k - 1] for link in links}
+        slope = (
+            {link: out[link][k - 1] - out[link][k - 2] for link in links}
+            if k >= 2
+            else {link: np.zeros(3) for link in links}
+        )
+        step_in = np.linalg.norm(inputs[k - 1] - inputs[k - 2]) if k >= 2 else 0.0
+        reach = np.linalg.norm(inputs[idx] - inputs[k - 1], axis=1)
+        ratio = reach / step_in if step_in > 0 else np.zeros(len(idx))
+        chunk = {name: value[idx] for name, value in q.items()}
+        predicted = {link: last[link] + ratio[:, None] * slope[link] for link in links}
+        for link in links:
+            chunk[link] = predicted[link].copy()
+        converged = False
+        for _ in range(12):
+            phi, jac, _, _ = _system(step, chunk, {}, len(idx))
+            worst = float(np.max(np.abs(phi)))
+            if worst <= tol:
+                converged = True
+                break
+            try:
+                dz = np.linalg.solve(_scaled(jac, plan.length), -phi[..., None])[..., 0]
+            except np.linalg.LinAlgError:
+                break
+            dz[:, 2::3] /= plan.length
+            for i, link in enumerate(links):
+                chunk[link] = chunk[link] + dz[:, 3 * i : 3 * i + 3]
+        jumps = max(float(np.max(np.abs(chunk[link] - predicted[link])[:, 2])) for link in links)
+        if converged and jumps <= 0.2:
+            for link in links:
+                out[link][idx] = chunk[link]
+        else:
+            for j in idx:
+                solved = _sequential(
+                    step, plan, q, inputs, int(j), {link: out[link][j - 1] for link in links}
+                )
+                for link in links:
+                    out[link][j] = solved[link]
+        k = stop
+    for link in links:
+        q[link] = out[link]
+
+
 _CONTINUATION_STEP = 0.05  # rad for a turning driver, fraction of the sketch for a sliding one
 
 
@@ -484,21 +561,11 @@ def _solve_poses(
     _place_drivers(plan, inputs, q, qd, qdd)
     for step in plan.steps:
         if not _closed_form(step, plan, q, inputs):
-            rows: dict[str, list[np.ndarray]] = {link: [] for link in step.links}
-            previous = {
+            start = {
                 link: np.array(guess[link], dtype=float) if guess and link in guess else np.zeros(3)
                 for link in step.links
             }
-            for k in range(n):
-                one = {link: value[k : k + 1] for link, value in q.items()}
-                for link in step.links:
-                    one[link] = previous[link][None, :].copy()
-                _newton(step, plan, one, inputs[k])
-                for link in step.links:
-                    previous[link] = one[link][0]
-                    rows[link].append(one[link][0])
-            for link in step.links:
-                q[link] = np.array(rows[link])
+            _follow(step, plan, q, inputs, start)
         _, jac, known_v, _ = _system(step, q, qd, n)
         s = np.linalg.svd(_scaled(jac, plan.length), compute_uv=False)
         ratio = s[:, -1] / s[:, 0]

@@ -199,3 +199,15 @@ def test_far_input_is_reached_by_continuation_in_the_sketch_mode():
     swept = solve_poses(plan, np.linspace(0, math.pi / 2, 200)[:, None])
     for link, state in direct.links.items():
         np.testing.assert_allclose(state.q, swept.q[link][-1], atol=1e-10)
+
+
+def test_batched_newton_follows_the_same_branch_as_pose_by_pose():
+    plan = make_plan(analyze(read_edgelist(FIXTURES / "eightbar_triad.edges")))
+    angles = np.linspace(0, 2 * math.pi, 400, endpoint=False)
+    batched = solve_poses(plan, angles[:, None])
+    previous = None
+    for k in range(0, 400, 37):
+        one = solve_poses(plan, angles[k : k + 1, None], previous)
+        previous = {link: value[0] for link, value in one.q.items()}
+        for link in batched.q:
+            np.testing.assert_allclose(batched.q[link][k], one.q[link][0], atol=1e-9)

@@ -38,6 +38,7 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from .errors import EdgeListError, EdgeListProblem
+from .expressions import read_number
 from .jsonformat import mechanism_from_json
 from .model import DRIVER_KEYS, Driver, Mechanism, Pair, PointDef, pair_from_tokens, validated
 from .utils import paused_gc
@@ -156,11 +157,23 @@ def _point(tokens: list[str], line_no: int) -> tuple[PointDef | None, str]:
         if key != "on" or not eq or not value:
             return None, f"unexpected token {tokens[4]!r} (only on=LINK may follow x y)"
         on = value
-    try:
-        x, y = _number(tokens[2]), _number(tokens[3])
-    except ValueError:
-        return None, "point coordinates must be finite numbers (metres)"
-    return PointDef(tokens[1], x, y, on, line_no), ""
+    values: list[float] = []
+    exact: list[str | None] = []
+    for token in tokens[2:4]:
+        try:
+            values.append(_number(token))
+            exact.append(None)
+        except ValueError:
+            try:
+                value, _ = read_number(token)
+            except ValueError:
+                return None, (
+                    "point coordinates must be finite numbers (metres) or exact expressions "
+                    "such as 0.2*sqrt(3)"
+                )
+            values.append(value)
+            exact.append(token)
+    return PointDef(tokens[1], values[0], values[1], on, line_no, (exact[0], exact[1])), ""
 
 
 def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:

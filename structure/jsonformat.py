@@ -23,6 +23,7 @@ import math
 from typing import Any
 
 from .errors import EdgeListError, EdgeListProblem
+from .expressions import read_number
 from .model import DRIVER_KEYS, Driver, Mechanism, Pair, PointDef, pair_from_tokens, validated
 
 __all__ = ["mechanism_from_dict", "mechanism_from_json", "mechanism_to_dict", "mechanism_to_json"]
@@ -196,10 +197,28 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
                 continue
             on = None if on is None else _text(on)
             value = value.get("xy")
-        if not isinstance(value, list) or len(value) != 2 or not all(map(_is_number, value)):
+        if not isinstance(value, list) or len(value) != 2:
             bad(where, "must be [x, y] with finite numbers")
             continue
-        points[str(key)] = PointDef(str(key), float(value[0]), float(value[1]), on)
+        coords: list[float] = []
+        exact: list[str | None] = []
+        for v in value:
+            if _is_number(v):
+                coords.append(float(v))
+                exact.append(None)
+                continue
+            try:
+                number, _ = read_number(v) if isinstance(v, str) else (None, None)
+            except ValueError:
+                number = None
+            if number is None:
+                break
+            coords.append(number)
+            exact.append(v)
+        if len(coords) != 2:
+            bad(where, "must be [x, y] with finite numbers or exact expressions like '0.2*sqrt(3)'")
+            continue
+        points[str(key)] = PointDef(str(key), coords[0], coords[1], on, 0, (exact[0], exact[1]))
     if problems:
         raise EdgeListError(source, problems)
     mechanism = Mechanism(tuple(pairs), _text(ground), tuple(drivers), points, name, source)
@@ -234,10 +253,10 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
         pairs.append(item)
     out["pairs"] = pairs
     if mechanism.points:
-        out["points"] = {
-            p.name: ({"xy": [p.x, p.y], "on": p.on} if p.on else [p.x, p.y])
-            for p in mechanism.points.values()
-        }
+        out["points"] = {}
+        for p in mechanism.points.values():
+            xy = [p.exact[0] or p.x, p.exact[1] or p.y]
+            out["points"][p.name] = {"xy": xy, "on": p.on} if p.on else xy
     return out
 
 

@@ -168,7 +168,8 @@ class PointDef:
     """Coordinates of a named point at the sketch pose (metres).
 
     ``on`` names the link the point is fixed to when it is a marker, not a
-    pair location.
+    pair location. ``exact`` keeps a coordinate written as an exact
+    expression (``0.2*sqrt(3)``) as text; plain decimals need none.
     """
 
     name: str
@@ -176,12 +177,15 @@ class PointDef:
     y: float
     on: str | None = None
     line_no: int = field(default=0, compare=False)
+    exact: tuple[str | None, str | None] = (None, None)
 
     @property
     def statement(self) -> str:
-        """The canonical ``point`` line."""
+        """The canonical ``point`` line (exact expressions kept as written)."""
         on = f" on={self.on}" if self.on is not None else ""
-        return f"point {self.name} {number_text(self.x)} {number_text(self.y)}{on}"
+        x = self.exact[0] or number_text(self.x)
+        y = self.exact[1] or number_text(self.y)
+        return f"point {self.name} {x} {y}{on}"
 
 
 @dataclass(frozen=True, slots=True)

@@ -267,7 +267,7 @@ BAD_DOCUMENTS = [
     pytest.param(_fourbar(points=[[0, 0]]), "points", id="points-list"),
     pytest.param(_fourbar(points={"A": [0]}), "'A'", id="point-one-coordinate"),
     pytest.param(_fourbar(points={"A": [0, 0, 0]}), "'A'", id="point-three-coordinates"),
-    pytest.param(_fourbar(points={"A": ["0", "0"]}), "'A'", id="point-text-coordinates"),
+    pytest.param(_fourbar(points={"A": ["zero", "0"]}), "'A'", id="point-text-coordinates"),
     pytest.param(_fourbar(points={"A": [True, False]}), "'A'", id="point-bool-coordinates"),
     pytest.param(_fourbar(points={"A": {"on": "1"}}), "'A'", id="point-without-xy"),
     pytest.param(_fourbar(points={"A": {"xy": [0, 0], "on": "9"}}), "9", id="point-on-unknown"),

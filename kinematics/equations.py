@@ -70,6 +70,7 @@ class Equation:
     b: str
     point: np.ndarray = field(default_factory=lambda: np.zeros(2))
     normal: np.ndarray = field(default_factory=lambda: np.zeros(2))
+    pair: int = 0  # the mechanism's pair it comes from (0: a compound hinge's canonical pair)
 
     @property
     def size(self) -> int:

@@ -155,15 +155,15 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
             a, b = gp.links
             if gp.kind is PairKind.R:
                 c = _xy(m, gp.point, f"pair {a}–{b} R", problems)
-                equations.append(Equation("HINGE", a, b, c))
+                equations.append(Equation("HINGE", a, b, c, pair=gp.pair))
                 continue
             pair = m.pair(gp.pair)
             if pair.angle_deg is None:
                 problems.append(EdgeListProblem(pair.line_no, pair.statement, "needs angle="))
             u = _unit(pair.angle_deg)
             c = _xy(m, gp.point, f"pair {pair.label}", problems)
-            equations.append(Equation("ANGLE", a, b))
-            equations.append(Equation("SLIDE", a, b, c, np.array([-u[1], u[0]])))
+            equations.append(Equation("ANGLE", a, b, pair=pair.id))
+            equations.append(Equation("SLIDE", a, b, c, np.array([-u[1], u[0]]), pair.id))
         steps.append(GroupStep(group, tuple(equations)))
     for link in report.decomposition.removed_links:
         equations = []
@@ -171,12 +171,14 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
             other = pair.other(link)
             if pair.kind is PairKind.R:
                 c = _xy(m, pair.point, f"pair {pair.label}", problems)
-                equations.append(Equation("HINGE", link, other, c))
+                equations.append(Equation("HINGE", link, other, c, pair=pair.id))
             elif pair.kind is PairKind.P:
                 u = _unit(pair.angle_deg)
                 c = _xy(m, pair.point, f"pair {pair.label}", problems)
-                equations.append(Equation("ANGLE", link, other))
-                equations.append(Equation("SLIDE", link, other, c, np.array([-u[1], u[0]])))
+                equations.append(Equation("ANGLE", link, other, pair=pair.id))
+                equations.append(
+                    Equation("SLIDE", link, other, c, np.array([-u[1], u[0]]), pair.id)
+                )
         steps.append(GroupStep(None, tuple(equations), link))
     if problems:
         raise EdgeListError(m.source, problems)

@@ -13,9 +13,31 @@ from __future__ import annotations
 
 from typing import Any
 
+from .exact import ExactState
 from .solve import KinematicState
 
-__all__ = ["state_to_dict"]
+__all__ = ["exact_to_dict", "state_to_dict"]
+
+
+def exact_to_dict(state: ExactState) -> dict[str, Any]:
+    """Exact values as ``{"value": "50*sqrt(3)", "float": 86.60...}`` pairs."""
+
+    def both(x: Any) -> dict[str, Any]:
+        return {"value": str(x), "float": float(x)}
+
+    return {
+        "links": {
+            name: {"omega": both(v["omega"]), "epsilon": both(v["epsilon"])}
+            for name, v in state.links.items()
+        },
+        "points": {
+            name: {
+                "velocity": [both(x) for x in v["velocity"]],
+                "acceleration": [both(x) for x in v["acceleration"]],
+            }
+            for name, v in state.points.items()
+        },
+    }
 
 
 def state_to_dict(state: KinematicState) -> dict[str, Any]:

@@ -13,8 +13,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from kinematics.exact import solve_exact
 from kinematics.plan import make_plan
-from kinematics.report import state_to_dict
+from kinematics.report import exact_to_dict, state_to_dict
 from kinematics.solve import solve_pose
 from kinematics.sweep import sweep
 
@@ -58,6 +59,16 @@ def _parser() -> argparse.ArgumentParser:
     )
     kin.add_argument("file", help="edge-list file with point coordinates and driver motion")
     kin.add_argument("--json", action="store_true", help="print one JSON object")
+    kin.add_argument(
+        "--exact", action="store_true", help="exact values (radicals, fractions) with sympy"
+    )
+    kin.add_argument(
+        "--flip",
+        action="append",
+        metavar="GROUP",
+        default=[],
+        help="assemble this dyad (e.g. 'II(2,3)') in the other mode than the sketch's",
+    )
     sw = sub.add_parser("sweep", help="the kinematics over a whole turn of the driver(s)")
     sw.add_argument("file", help="edge-list file with point coordinates and driver motion")
     sw.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
@@ -96,13 +107,18 @@ def _vector(v: object) -> str:
 def _kinematics(args: argparse.Namespace) -> int:
     try:
         report = analyze(read_edgelist(args.file))
-        plan = make_plan(report)
+        plan = make_plan(report, flip=args.flip)
+        if args.exact:
+            return _print_exact(report, plan, args.json)
         state = solve_pose(plan)
     except MechanismError as exc:
         if args.json:
             print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
         sys.stderr.write(f"error: {exc}\n")
         return 1
+    except ValueError as exc:  # a --flip that names no dyad
+        sys.stderr.write(f"error: {exc}\n")
+        return 2
     if args.json:
         print(json.dumps(state_to_dict(state), indent=2, ensure_ascii=False))
         return 0
@@ -136,6 +152,23 @@ def _kinematics(args: argparse.Namespace) -> int:
             f"a = {_vector(point.acceleration)} m/s² "
             f"(|a| = {float(np.hypot(*point.acceleration)):.6g})"
         )
+    sys.stdout.write("\n".join(out) + "\n")
+    return 0
+
+
+def _print_exact(report, plan, as_json: bool) -> int:
+    state = solve_exact(plan)
+    if as_json:
+        print(json.dumps(exact_to_dict(state), indent=2, ensure_ascii=False))
+        return 0
+    m = report.mechanism
+    out = [f"{m.name or 'mechanism'}  ({m.source}), exact values at the sketch pose", ""]
+    for name, values in state.links.items():
+        out.append(f"  {name}: ω = {values['omega']} rad/s, ε = {values['epsilon']} rad/s²")
+    out.append("")
+    for name, values in state.points.items():
+        v, a = values["velocity"], values["acceleration"]
+        out.append(f"  {name}: v = ({v[0]}, {v[1]}) m/s, a = ({a[0]}, {a[1]}) m/s²")
     sys.stdout.write("\n".join(out) + "\n")
     return 0
 

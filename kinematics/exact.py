@@ -1,0 +1,188 @@
+"""Exact velocities and accelerations at the sketch pose, with sympy.
+
+At the sketch every link is at ``q = 0``, so the pair Jacobians are built
+from the sketch coordinates alone; when those are exact (decimals, fractions,
+``0.2*sqrt(3)``) the group-by-group linear solves are exact too. The drivers'
+speeds may stay symbols: ``symbolic=True`` gives ω3 = ω1/2 for the exam's
+slotted link rather than a number.
+
+>>> from structure.edgelist import parse_edgelist
+>>> from structure.report import analyze
+>>> from kinematics.plan import make_plan
+>>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+...                     "point A 0 0", "point B 0 0.1", "point C 0.4 0.1", "point D 0.4 -0.3"])
+>>> e = solve_exact(make_plan(analyze(m)))
+>>> e.links["3"]["omega"], e.links["2"]["epsilon"]
+(5, 75)
+>>> solve_exact(make_plan(analyze(m)), symbolic=True).links["3"]["omega"]
+omega_1/4
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from structure.expressions import exact_float, exact_value
+from structure.model import Mechanism
+
+from .plan import GroupStep, SolvePlan
+
+__all__ = ["ExactState", "solve_exact"]
+
+
+@dataclass(frozen=True)
+class ExactState:
+    """Exact ``omega``/``epsilon`` per link and ``velocity``/``acceleration`` per point.
+
+    Values are sympy expressions; ``drivers`` maps each driver to its speed
+    and acceleration (numbers, or symbols ``omega_1``, ``epsilon_1``).
+    """
+
+    links: Mapping[str, Mapping[str, sympy.Expr]]
+    points: Mapping[str, Mapping[str, tuple[sympy.Expr, sympy.Expr]]]
+    drivers: Mapping[str, tuple[sympy.Expr, sympy.Expr]]
+
+
+def _exact_point(m: Mechanism, name: str | None) -> sympy.Matrix:
+    p = m.points[name]  # type: ignore[index]
+    x = exact_value(p.exact[0]) if p.exact[0] else exact_float(p.x)
+    y = exact_value(p.exact[1]) if p.exact[1] else exact_float(p.y)
+    return sympy.Matrix([x, y])
+
+
+def _exact_xy(m: Mechanism, xy) -> sympy.Matrix:
+    for p in m.points.values():
+        if p.x == float(xy[0]) and p.y == float(xy[1]):
+            return _exact_point(m, p.name)
+    return sympy.Matrix([exact_float(xy[0]), exact_float(xy[1])])
+
+
+def _unit(degrees: float | None) -> sympy.Matrix:
+    t = sympy.pi * exact_float(degrees or 0.0) / 180
+    return sympy.Matrix([sympy.cos(t), sympy.sin(t)])
+
+
+def _perp(v: sympy.Matrix) -> sympy.Matrix:
+    return sympy.Matrix([-v[1], v[0]])
+
+
+def _rows(step: GroupStep, plan: SolvePlan):
+    """Exact (partials of a, partials of b, kind, point, normal) of each equation at q = 0."""
+    m = plan.mechanism
+    out = []
+    for eq in step.equations:
+        pair = m.pair(eq.pair) if eq.pair else None
+        c = (
+            _exact_point(m, pair.point)
+            if pair is not None and pair.point
+            else _exact_xy(m, eq.point)
+        )
+        if eq.kind == "HINGE":
+            ja = sympy.Matrix.hstack(sympy.eye(2), _perp(c))
+            out.append((eq, ja, -ja, c, None))
+        elif eq.kind == "ANGLE":
+            out.append((eq, sympy.Matrix([[0, 0, 1]]), sympy.Matrix([[0, 0, -1]]), c, None))
+        else:
+            u = _unit(pair.angle_deg if pair is not None else None)
+            n = _perp(u)
+            lever = (n.T * _perp(c))[0]
+            ja = sympy.Matrix([[-n[0], -n[1], -lever]])
+            jb = sympy.Matrix([[n[0], n[1], lever]])
+            out.append((eq, ja, jb, c, n))
+    return out
+
+
+def _bias(kind: str, c: sympy.Matrix, n, va: sympy.Matrix, vb: sympy.Matrix) -> sympy.Matrix:
+    wa, wb = va[2], vb[2]
+    if kind == "ANGLE":
+        return sympy.Matrix([0])
+    if kind == "HINGE":
+        return -(wa**2) * c + wb**2 * c
+    d_dot = vb[:2, 0] + wb * _perp(c) - va[:2, 0] - wa * _perp(c)
+    return sympy.Matrix([2 * wa * (_perp(n).T * d_dot)[0] + (n.T * (-(wb**2) * c + wa**2 * c))[0]])
+
+
+def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
+    """Exact ω, ε of every link and v, a of every named point at the sketch pose.
+
+    ``symbolic`` keeps each driver's speed and acceleration as symbols.
+    """
+    m = plan.mechanism
+    zero = sympy.zeros(3, 1)
+    qd: dict[str, sympy.Matrix] = {m.ground: zero}
+    qdd: dict[str, sympy.Matrix] = {m.ground: zero}
+    drivers: dict[str, tuple[sympy.Expr, sympy.Expr]] = {}
+    for k, d in enumerate(plan.drivers, start=1):
+        if symbolic:
+            names = ("omega", "epsilon") if d.kind == "R" else ("v", "a")
+            w, e = sympy.Symbol(f"{names[0]}_{k}"), sympy.Symbol(f"{names[1]}_{k}")
+        else:
+            w, e = exact_float(d.speed), exact_float(d.acceleration)
+        drivers[d.link] = (w, e)
+        if d.kind == "R":
+            pivot = _exact_xy(m, d.pivot)
+            qd[d.link] = sympy.Matrix([*(-w * _perp(pivot)), w])
+            qdd[d.link] = sympy.Matrix([*(-e * _perp(pivot) + w**2 * pivot), e])
+        else:
+            slide = next(
+                p for p in m.pairs_of(d.link) if p.other(d.link) == m.ground and p.kind.value == "P"
+            )
+            u = _unit(slide.angle_deg)
+            qd[d.link] = sympy.Matrix([*(w * u), 0])
+            qdd[d.link] = sympy.Matrix([*(e * u), 0])
+    for step in plan.steps:
+        links = step.links
+        index = {link: i for i, link in enumerate(links)}
+        rows = _rows(step, plan)
+        size = sum(eq.size for eq, *_ in rows)
+        jac = sympy.zeros(size, 3 * len(links))
+        rhs_v = sympy.zeros(size, 1)
+        r = 0
+        for eq, ja, jb, _, _ in rows:
+            for link, part in ((eq.a, ja), (eq.b, jb)):
+                if link in index:
+                    jac[r : r + eq.size, 3 * index[link] : 3 * index[link] + 3] = part
+                else:
+                    rhs_v[r : r + eq.size, 0] -= part * qd.get(link, zero)
+            r += eq.size
+        z_dot = _solve(jac, rhs_v)
+        for link, i in index.items():
+            qd[link] = z_dot[3 * i : 3 * i + 3, 0]
+        rhs_a = sympy.zeros(size, 1)
+        r = 0
+        for eq, ja, jb, c, n in rows:
+            for link, part in ((eq.a, ja), (eq.b, jb)):
+                if link not in index:
+                    rhs_a[r : r + eq.size, 0] -= part * qdd.get(link, zero)
+            va, vb = qd.get(eq.a, zero), qd.get(eq.b, zero)
+            rhs_a[r : r + eq.size, 0] -= _bias(eq.kind, c, n, va, vb)
+            r += eq.size
+        z_ddot = _solve(jac, rhs_a)
+        for link, i in index.items():
+            qdd[link] = z_ddot[3 * i : 3 * i + 3, 0]
+    links = {
+        name: {"omega": sympy.simplify(qd[name][2]), "epsilon": sympy.simplify(qdd[name][2])}
+        for name in m.moving_links
+        if name in qd
+    }
+    points = {}
+    for name, (link, _) in plan.points.items():
+        c = _exact_point(m, name) if name in m.points else sympy.zeros(2, 1)
+        v, a = qd.get(link, zero), qdd.get(link, zero)
+        vel = v[:2, 0] + v[2] * _perp(c)
+        acc = a[:2, 0] + a[2] * _perp(c) - v[2] ** 2 * c
+        points[name] = {
+            "velocity": (sympy.simplify(vel[0]), sympy.simplify(vel[1])),
+            "acceleration": (sympy.simplify(acc[0]), sympy.simplify(acc[1])),
+        }
+    return ExactState(links, points, drivers)
+
+
+def _solve(jac: sympy.Matrix, rhs: sympy.Matrix) -> sympy.Matrix:
+    if jac.rows == jac.cols:
+        return jac.LUsolve(rhs)
+    solution, params = jac.gauss_jordan_solve(rhs)  # a redundant link: consistent rows
+    return solution.subs({p: 0 for p in params})

@@ -38,7 +38,9 @@ class Sweep:
     ``inputs`` has shape (poses, drivers); ``links[name]`` holds ``angle``,
     ``omega``, ``epsilon`` (shape (poses,)); ``points[name]`` holds
     ``position``, ``velocity``, ``acceleration`` (shape (poses, 2));
-    ``transmission[group]`` the transmission angle of each RRR dyad (rad).
+    ``transmission[group]`` the transmission angle of each RRR dyad (at the
+    middle pin, in [0, π]) and RRP dyad (rod against the slide's normal, in
+    [0, π/2]), rad; 0 or π is a dead centre.
     """
 
     inputs: np.ndarray
@@ -140,4 +142,34 @@ def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -
         label: _angles(points[b]["position"], points[c]["position"], points[d]["position"])
         for label, (b, c, d) in _rrr_pins(plan).items()
     }
+    transmission.update(_rrp_transmission(plan, motion, points))
     return Sweep(inputs, links, points, transmission)
+
+
+def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
+    """RRP dyads: the angle between the rod and the normal to the slide, in [0, π/2].
+
+    90° when the rod pushes along the slide, 0° at the dead centre (rod ⟂ slide).
+    """
+    out = {}
+    for step in plan.steps:
+        g = step.group
+        if g is None or g.kind != "RRP":
+            continue
+        rod_pin = [p for p in g.external_pairs if p.kind.value == "R"]
+        slide = [p for p in g.external_pairs if p.kind.value == "P"]
+        (mid,) = g.internal_pairs
+        if len(rod_pin) != 1 or len(slide) != 1 or mid.point not in points:
+            continue
+        if rod_pin[0].point not in points:
+            continue
+        pair = plan.mechanism.pair(slide[0].pair)
+        if pair.angle is None:
+            continue
+        guide = slide[0].links[1]
+        theta = motion.q[guide][:, 2] if guide in motion.q else np.zeros(len(motion.inputs))
+        u = np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
+        rod = points[mid.point]["position"] - points[rod_pin[0].point]["position"]
+        along = np.abs(np.einsum("ij,ij->i", rod, u)) / np.hypot(rod[:, 0], rod[:, 1])
+        out[g.label] = np.arcsin(np.clip(along, 0.0, 1.0))
+    return out

@@ -72,3 +72,22 @@ def test_csv_has_one_row_per_pose(tmp_path):
     assert "3.omega" in header and "C.velocity.x" in header
     omega = [float(r[header.index("1.omega")]) for r in rows[1:]]
     assert omega == [10.0] * 12
+
+
+def test_crank_slider_transmission_angle_is_smallest_with_the_crank_across_the_slide():
+    # central crank–slider r = 0.1, l = 0.3: the rod's angle to the slide is asin(r·sinφ/l),
+    # so μ = 90° − that, smallest (asin(1/3) from 90°) at φ = 90° and 270°
+    text = """
+driver 1 omega=1
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 P C angle=0
+point A 0 0
+point B 0.1 0
+point C 0.4 0
+"""
+    result = sweep(plan_of(text), steps=360)
+    (mu,) = result.transmission.values()
+    assert mu.min() == pytest.approx(math.pi / 2 - math.asin(1 / 3), abs=1e-9)
+    assert mu.max() == pytest.approx(math.pi / 2, abs=1e-12)

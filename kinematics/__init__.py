@@ -1,5 +1,7 @@
-"""Solvers that consume the structural report's Assur groups in solve order.
+"""Kinematics of planar mechanisms, solved Assur group by Assur group.
 
-Positions, velocities, accelerations and forces are not implemented yet; this
-package depends on :mod:`structure`, never the other way round.
+The structural report (:mod:`structure`) gives the groups in solve order;
+:func:`kinematics.plan.make_plan` turns them into equations and
+:mod:`kinematics.solve`, :mod:`kinematics.sweep` and :mod:`kinematics.exact`
+solve them. This package depends on :mod:`structure`, never the other way round.
 """

@@ -82,7 +82,8 @@ class SolvePlan:
     ``points`` maps a point name to the link that carries it and its sketch
     coordinates; ``length`` is the sketch's size (for tolerances); ``flip``
     holds the labels of the dyads to assemble in the other mode than the
-    sketch's.
+    sketch's; ``higher_pairs`` the higher pairs replaced by virtual links,
+    whose replacement holds at the sketch pose only.
     """
 
     mechanism: Mechanism
@@ -91,6 +92,7 @@ class SolvePlan:
     points: Mapping[str, tuple[str, np.ndarray]]
     length: float
     flip: frozenset[str] = frozenset()
+    higher_pairs: tuple[str, ...] = ()
 
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
@@ -213,4 +215,5 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
         MappingProxyType(points),
         span if span > 0 else 1.0,
         frozenset(flip),
+        tuple(r.pair.label for r in report.replacements),
     )

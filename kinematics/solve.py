@@ -533,10 +533,21 @@ def solve_poses(
         A group does not close at some input (the first one is named).
     SingularPoseError
         A group is at a dead centre at some input.
+    MechanismError
+        Inputs away from the sketch for a mechanism with higher pairs (their
+        replacement is instantaneous).
     """
     inputs = np.atleast_2d(np.asarray(inputs, dtype=float))
     if inputs.shape[1] != len(plan.drivers):
         inputs = inputs.reshape(-1, len(plan.drivers))
+    if plan.higher_pairs and np.any(inputs != 0):
+        raise MechanismError(
+            "the higher pair(s) "
+            + ", ".join(plan.higher_pairs)
+            + " are replaced by virtual links that hold at the sketch pose only; "
+            "away from the sketch a cam needs its profile and a gear mesh its rolling "
+            "constraint, which are not supported yet: solve at the sketch pose"
+        )
     if guess is None and _needs_continuation(plan):
         dense, picks = _densified(plan, inputs)
         if len(dense) > len(inputs):

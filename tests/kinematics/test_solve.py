@@ -83,11 +83,17 @@ point C {x!r} {e!r}
     assert state.links["3"].omega == 0.0 or abs(state.links["3"].omega) < 1e-12
 
 
-def fixtures_with_sketch():
+def fixtures_with_sketch(moving: bool = True):
+    """Fixtures with a complete sketch; ``moving``: only those that can leave their sketch.
+
+    A higher pair's replacement holds at the sketch pose only, so cams and gears stay there.
+    """
     out = []
     for path in sorted(FIXTURES.glob("*.edges")):
         m = read_edgelist(path)
         if m.points and not sketch_problems(m):
+            if moving and any(p.kind.value == "H" for p in m.pairs):
+                continue
             out.append(path.name)
     return out
 
@@ -119,6 +125,16 @@ def test_velocities_and_accelerations_match_finite_differences(name):
     for point, ps in base.points.items():
         dp = (ahead.points[point].position - behind.points[point].position) / (2 * h)
         np.testing.assert_allclose(ps.velocity, dp, atol=1e-6 * (1 + float(np.abs(dp).max())))
+
+
+def test_higher_pairs_are_solved_at_the_sketch_only():
+    from structure.errors import MechanismError
+
+    plan = make_plan(analyze(read_edgelist(FIXTURES / "cam_roller_follower.edges")))
+    state = solve_pose(plan)
+    assert state.links
+    with pytest.raises(MechanismError, match="sketch pose only"):
+        solve_pose(plan, (0.1,))
 
 
 def test_a_pose_that_cannot_be_assembled_is_named():

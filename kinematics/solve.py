@@ -577,6 +577,8 @@ def _solve_poses(
                 for link in step.links
             }
             _follow(step, plan, q, inputs, start)
+        elif _closed_form_rates(step, plan, q, qd, qdd, inputs):
+            continue
         _, jac, known_v, _ = _system(step, q, qd, n)
         s = np.linalg.svd(_scaled(jac, plan.length), compute_uv=False)
         ratio = s[:, -1] / s[:, 0]
@@ -602,6 +604,136 @@ def _solve_poses(
     for table in (q, qd, qdd):
         table.setdefault(ground, zero)
     return Motion(inputs, MappingProxyType(q), MappingProxyType(qd), MappingProxyType(qdd))
+
+
+def _point_motion(
+    q: Mapping, qd: Mapping, qdd: Mapping, link: str, world: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Velocity and acceleration of the point of ``link`` now at ``world`` (N, 2)."""
+    n = world.shape[0]
+    if link not in q:
+        return np.zeros((n, 2)), np.zeros((n, 2))
+    r = world - q[link][:, :2]
+    jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
+    w, e = qd[link][:, 2:3], qdd[link][:, 2:3]
+    return qd[link][:, :2] + w * jr, qdd[link][:, :2] + e * jr - w**2 * r
+
+
+def _set_rates(
+    qd: dict,
+    qdd: dict,
+    link: str,
+    x: np.ndarray,
+    p: np.ndarray,
+    v: np.ndarray,
+    a: np.ndarray,
+    w: np.ndarray,
+    e: np.ndarray,
+) -> None:
+    """Link rates from one of its points: at world ``p``, velocity ``v``, acceleration ``a``."""
+    r = p - x
+    jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
+    qd[link] = np.column_stack([v - w[:, None] * jr, w])
+    qdd[link] = np.column_stack([a - e[:, None] * jr + (w**2)[:, None] * r, e])
+
+
+def _dead_centre(step: GroupStep, inputs: np.ndarray, sine: np.ndarray) -> None:
+    bad = np.abs(sine) <= _SINGULAR
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise SingularPoseError(
+            f"group {step.label} is at a dead centre at input {_fmt(inputs[k])}: its "
+            f"Jacobian loses rank (sine of the transmission angle {sine[k]:.2g}; "
+            "transmission angle 0° or 180°)",
+            step.label,
+            tuple(inputs[k]),
+        )
+
+
+def _closed_form_rates(
+    step: GroupStep, plan: SolvePlan, q: dict, qd: dict, qdd: dict, inputs: np.ndarray
+) -> bool:
+    """Velocities and accelerations of an RRR or RRP dyad from its pins, 2×2 at a time.
+
+    RRR: v_C = v_B + ω1·J(C − B) = v_D + ω2·J(C − D), and likewise for the
+    accelerations with the centripetal terms. RRP: the slider's point C moves
+    with its guide plus ṡ along it, and a Coriolis term 2·ω_guide·ṡ·J·u.
+    """
+    g = step.group
+    if g is None or g.kind not in ("RRR", "RRP") or len(step.links) != 2:
+        return False
+    m = plan.mechanism
+    n = inputs.shape[0]
+    (mid,) = g.internal_pairs
+    ext = {p.links[0]: p for p in g.external_pairs}
+    if len(ext) != 2 or mid.point is None or m.coordinates(mid.point) is None:
+        return False
+    c = np.array(m.coordinates(mid.point), dtype=float)
+
+    def world(link: str, sketch: np.ndarray) -> np.ndarray:
+        return q[link][:, :2] + rotate_many(q[link][:, 2], sketch)
+
+    if g.kind == "RRR":
+        l1, l2 = step.links
+        e1, e2 = ext[l1], ext[l2]
+        if e1.point is None or e2.point is None:
+            return False
+        b = np.array(m.coordinates(e1.point), dtype=float)
+        d = np.array(m.coordinates(e2.point), dtype=float)
+        bw, dw, cw = world(l1, b), world(l2, d), world(l1, c)
+        vb, ab = _point_motion(q, qd, qdd, e1.links[1], bw)
+        vd, ad = _point_motion(q, qd, qdd, e2.links[1], dw)
+        r1, r2 = cw - bw, cw - dw
+        det = r1[:, 0] * r2[:, 1] - r1[:, 1] * r2[:, 0]
+        _dead_centre(step, inputs, det / (np.hypot(*r1.T) * np.hypot(*r2.T)))
+        # ω1·J·r1 − ω2·J·r2 = rhs  ⇔  ω1·r1 − ω2·r2 = −J·rhs
+        rhs = vd - vb
+        w1, w2 = _cramer(r1, -r2, np.stack([rhs[:, 1], -rhs[:, 0]], axis=1))
+        rhs = ad - ab + (w1**2)[:, None] * r1 - (w2**2)[:, None] * r2
+        e1_, e2_ = _cramer(r1, -r2, np.stack([rhs[:, 1], -rhs[:, 0]], axis=1))
+        vc = vb + w1[:, None] * np.stack([-r1[:, 1], r1[:, 0]], axis=1)
+        ac = ab + e1_[:, None] * np.stack([-r1[:, 1], r1[:, 0]], axis=1) - (w1**2)[:, None] * r1
+        _set_rates(qd, qdd, l1, q[l1][:, :2], cw, vc, ac, w1, e1_)
+        _set_rates(qd, qdd, l2, q[l2][:, :2], cw, vc, ac, w2, e2_)
+        return True
+    rod = next((x for x in step.links if ext[x].kind is PairKind.R), None)
+    slider = next((x for x in step.links if ext[x].kind is PairKind.P), None)
+    if rod is None or slider is None or ext[rod].point is None:
+        return False
+    pair = m.pair(ext[slider].pair)
+    if pair.angle is None:
+        return False
+    b = np.array(m.coordinates(ext[rod].point), dtype=float)
+    guide = ext[slider].links[1]
+    bw, cw = world(rod, b), world(rod, c)
+    vb, ab = _point_motion(q, qd, qdd, ext[rod].links[1], bw)
+    vk, ak = _point_motion(q, qd, qdd, guide, cw)
+    theta = q[guide][:, 2] if guide in q else np.zeros(n)
+    wk = qd[guide][:, 2] if guide in qd else np.zeros(n)
+    ek = qdd[guide][:, 2] if guide in qdd else np.zeros(n)
+    u = np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
+    r1 = cw - bw
+    jr1 = np.stack([-r1[:, 1], r1[:, 0]], axis=1)
+    ju = np.stack([-u[:, 1], u[:, 0]], axis=1)
+    # ω1·J·r1 − ṡ·u = v_K(C) − v_B
+    det = jr1[:, 0] * -u[:, 1] - jr1[:, 1] * -u[:, 0]
+    _dead_centre(step, inputs, det / np.hypot(*r1.T))
+    w1, sd = _cramer(jr1, -u, vk - vb)
+    rhs = ak - ab + (w1**2)[:, None] * r1 + (2 * wk * sd)[:, None] * ju
+    e1_, _ = _cramer(jr1, -u, rhs)
+    vc = vb + w1[:, None] * jr1
+    ac = ab + e1_[:, None] * jr1 - (w1**2)[:, None] * r1
+    _set_rates(qd, qdd, rod, q[rod][:, :2], cw, vc, ac, w1, e1_)
+    _set_rates(qd, qdd, slider, q[slider][:, :2], cw, vc, ac, wk, ek)
+    return True
+
+
+def _cramer(a: np.ndarray, b: np.ndarray, rhs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Solve x·a + y·b = rhs for many 2-vectors (rows)."""
+    d = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+    x = (rhs[:, 0] * b[:, 1] - rhs[:, 1] * b[:, 0]) / d
+    y = (a[:, 0] * rhs[:, 1] - a[:, 1] * rhs[:, 0]) / d
+    return x, y
 
 
 def _least_squares(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:

@@ -138,15 +138,59 @@ def _fmt(inputs: np.ndarray) -> str:
     return ", ".join(f"{x:.6g}" for x in np.atleast_1d(inputs))
 
 
+class _Poses(dict):
+    """Link poses (N, 3) by link, with the cosine and sine of each angle kept once computed."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._trig: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+
+    def __setitem__(self, link: str, value: np.ndarray) -> None:
+        self._trig.pop(link, None)
+        super().__setitem__(link, value)
+
+    def place(self, link: str, value: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> None:
+        super().__setitem__(link, value)
+        self._trig[link] = (cos, sin)
+
+    def trig(self, link: str) -> tuple[np.ndarray, np.ndarray]:
+        found = self._trig.get(link)
+        if found is None:
+            theta = self[link][:, 2]
+            found = self._trig[link] = (np.cos(theta), np.sin(theta))
+        return found
+
+
+def _rot(trig: tuple[np.ndarray, np.ndarray], v: np.ndarray) -> np.ndarray:
+    """``R(θ_k)·v`` from the cosines and sines of the θ_k; ``v`` (2,) or (N, 2)."""
+    c, s = trig
+    out = np.empty((c.shape[0], 2))
+    vx, vy = v[..., 0], v[..., 1]
+    out[:, 0] = c * vx - s * vy
+    out[:, 1] = s * vx + c * vy
+    return out
+
+
+def _pose(x: np.ndarray, theta: np.ndarray) -> np.ndarray:
+    out = np.empty((theta.shape[0], 3))
+    out[:, :2] = x
+    out[:, 2] = theta
+    return out
+
+
 def _place_drivers(plan: SolvePlan, inputs: np.ndarray, q: dict, qd: dict, qdd: dict) -> None:
     n = inputs.shape[0]
     for k, d in enumerate(plan.drivers):
         value = inputs[:, k]
         if d.kind == "R":
             # turn by `value` about the pivot: x = c − R(φ)·c keeps the pivot in place
-            r = rotate_many(value, d.pivot)
+            trig = (np.cos(value), np.sin(value))
+            r = _rot(trig, d.pivot)
             jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
-            q[d.link] = np.column_stack([d.pivot - r, value])
+            if isinstance(q, _Poses):
+                q.place(d.link, _pose(d.pivot - r, value), *trig)
+            else:
+                q[d.link] = _pose(d.pivot - r, value)
             qd[d.link] = np.column_stack([-d.speed * jr, np.full(n, d.speed)])
             qdd[d.link] = np.column_stack(
                 [-d.acceleration * jr + d.speed**2 * r, np.full(n, d.acceleration)]
@@ -236,6 +280,8 @@ def _sketch_angle(v: np.ndarray) -> float:
 def _world(q: Mapping, link: str, c: np.ndarray, n: int) -> np.ndarray:
     if link not in q:
         return np.broadcast_to(c, (n, 2)).copy()
+    if isinstance(q, _Poses):
+        return q[link][:, :2] + _rot(q.trig(link), c)
     return q[link][:, :2] + rotate_many(q[link][:, 2], c)
 
 
@@ -409,9 +455,20 @@ def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) 
 
 def _place(q: dict, link: str, pw: np.ndarray, cw: np.ndarray, p: np.ndarray, c: np.ndarray):
     """Pose of a link whose sketch points p, c are at world points pw, cw."""
-    theta = np.arctan2(cw[:, 1] - pw[:, 1], cw[:, 0] - pw[:, 0]) - _sketch_angle(c - p)
-    theta = np.unwrap((theta + math.pi) % (2 * math.pi) - math.pi)
-    q[link] = np.column_stack([pw - rotate_many(theta, p), theta])
+    sketch = (c - p) / float(np.hypot(*(c - p)))
+    span = cw - pw
+    length = np.hypot(span[:, 0], span[:, 1])
+    ux, uy = span[:, 0] / length, span[:, 1] / length
+    cos = sketch[0] * ux + sketch[1] * uy
+    sin = sketch[0] * uy - sketch[1] * ux
+    theta = np.arctan2(sin, cos)
+    if theta.shape[0] > 1:
+        theta = np.unwrap(theta)
+    value = _pose(pw - _rot((cos, sin), p), theta)
+    if isinstance(q, _Poses):
+        q.place(link, value, cos, sin)
+    else:
+        q[link] = value
 
 
 _CHUNK = 64  # poses solved together by a batched Newton, from a predictor
@@ -566,7 +623,7 @@ def _solve_poses(
 ) -> Motion:
     n = inputs.shape[0]
     ground = plan.mechanism.ground
-    q: dict[str, np.ndarray] = {}
+    q: dict[str, np.ndarray] = _Poses()
     qd: dict[str, np.ndarray] = {}
     qdd: dict[str, np.ndarray] = {}
     _place_drivers(plan, inputs, q, qd, qdd)
@@ -671,7 +728,7 @@ def _closed_form_rates(
     c = np.array(m.coordinates(mid.point), dtype=float)
 
     def world(link: str, sketch: np.ndarray) -> np.ndarray:
-        return q[link][:, :2] + rotate_many(q[link][:, 2], sketch)
+        return _world(q, link, sketch, n)
 
     if g.kind == "RRR":
         l1, l2 = step.links

@@ -53,11 +53,13 @@ def _exact_point(m: Mechanism, name: str | None) -> sympy.Matrix:
     return sympy.Matrix([x, y])
 
 
-def _exact_xy(m: Mechanism, xy) -> sympy.Matrix:
-    for p in m.points.values():
-        if p.x == float(xy[0]) and p.y == float(xy[1]):
-            return _exact_point(m, p.name)
-    return sympy.Matrix([exact_float(xy[0]), exact_float(xy[1])])
+def _name_of(m: Mechanism, xy) -> str:
+    """The hinge whose sketch point is ``xy`` (for a compound hinge's canonical pair)."""
+    for h in m.compound_hinges.values():
+        p = m.points.get(h.point)
+        if p is not None and (p.x, p.y) == (float(xy[0]), float(xy[1])):
+            return h.point
+    raise ValueError(f"no compound hinge at {tuple(xy)}")
 
 
 def _unit(degrees: float | None) -> sympy.Matrix:
@@ -75,11 +77,9 @@ def _rows(step: GroupStep, plan: SolvePlan):
     out = []
     for eq in step.equations:
         pair = m.pair(eq.pair) if eq.pair else None
-        c = (
-            _exact_point(m, pair.point)
-            if pair is not None and pair.point
-            else _exact_xy(m, eq.point)
-        )
+        # a compound hinge's canonical pair has no id: the sketch point is the same pin
+        name = pair.point if pair is not None else _name_of(m, eq.point)
+        c = _exact_point(m, name)
         if eq.kind == "HINGE":
             ja = sympy.Matrix.hstack(sympy.eye(2), _perp(c))
             out.append((eq, ja, -ja, c, None))
@@ -123,7 +123,7 @@ def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
             w, e = exact_float(d.speed), exact_float(d.acceleration)
         drivers[d.link] = (w, e)
         if d.kind == "R":
-            pivot = _exact_xy(m, d.pivot)
+            pivot = _exact_point(m, d.point)
             qd[d.link] = sympy.Matrix([*(-w * _perp(pivot)), w])
             qdd[d.link] = sympy.Matrix([*(-e * _perp(pivot) + w**2 * pivot), e])
         else:

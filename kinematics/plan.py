@@ -44,6 +44,7 @@ class DriverStep:
     speed: float  # ω (rad/s) or v (m/s)
     acceleration: float  # ε (rad/s²) or a (m/s²)
     speed_given: bool
+    point: str | None = None  # the pivot's name (R) or a point of the slide (P)
 
 
 @dataclass(frozen=True)
@@ -139,7 +140,9 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
             pivot = _xy(m, point, f"driver {link}'s pivot", problems)
             speed, acc = values.get("omega"), values.get("epsilon", 0.0)
             drivers.append(
-                DriverStep(link, "R", pivot, np.zeros(2), speed or 0.0, acc, speed is not None)
+                DriverStep(
+                    link, "R", pivot, np.zeros(2), speed or 0.0, acc, speed is not None, point
+                )
             )
             continue
         p_pair = next(p for p in to_ground if p.kind is PairKind.P)
@@ -148,7 +151,16 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
         direction = _unit(p_pair.angle_deg)  # v > 0 moves the driver along angle=
         speed, acc = values.get("v"), values.get("a", 0.0)
         drivers.append(
-            DriverStep(link, "P", np.zeros(2), direction, speed or 0.0, acc, speed is not None)
+            DriverStep(
+                link,
+                "P",
+                np.zeros(2),
+                direction,
+                speed or 0.0,
+                acc,
+                speed is not None,
+                p_pair.point,
+            )
         )
     steps: list[GroupStep] = []
     for group in report.groups:

@@ -47,3 +47,29 @@ def test_exam_slotted_link_turns_at_half_the_crank_speed():
     # with a uniform crank the slotted link has no angular acceleration (AC = AB)
     epsilon = sympy.Symbol("epsilon_1")
     assert sympy.simplify(state.links["3"]["epsilon"].subs(epsilon, 0)) == 0
+
+
+def sketch_fixtures():
+    from structure.constraints import sketch_problems
+
+    out = []
+    for path in sorted(FIXTURES.glob("*.edges")):
+        m = read_edgelist(path)
+        if m.points and not sketch_problems(m):
+            out.append(path.name)
+    return out
+
+
+@pytest.mark.parametrize("name", sketch_fixtures())
+def test_exact_and_numeric_solvers_agree_at_the_sketch(name):
+    from kinematics.solve import solve_pose
+
+    plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
+    numeric = solve_pose(plan)
+    exact = solve_exact(plan)
+    for link, state in numeric.links.items():
+        assert float(exact.links[link]["omega"]) == pytest.approx(state.omega, abs=1e-9)
+        assert float(exact.links[link]["epsilon"]) == pytest.approx(state.epsilon, abs=1e-7)
+    for point, state in numeric.points.items():
+        v = [float(x) for x in exact.points[point]["velocity"]]
+        assert v == pytest.approx(state.velocity.tolist(), abs=1e-9)

@@ -20,6 +20,7 @@ omega_1/4
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -63,8 +64,18 @@ def _name_of(m: Mechanism, xy) -> str:
 
 
 def _unit(degrees: float | None) -> sympy.Matrix:
-    t = sympy.pi * exact_float(degrees or 0.0) / 180
-    return sympy.Matrix([sympy.cos(t), sympy.sin(t)])
+    """Exact unit vector of a slide direction.
+
+    Angles that are a whole number of degrees, or a simple fraction of one,
+    give radicals (cos 30° = √3/2); any other angle is taken as the exact
+    rational of its float cosine and sine (the data are not exact then anyway).
+    """
+    value = exact_float(degrees or 0.0)
+    if value.q <= 12:
+        t = sympy.pi * value / 180
+        return sympy.Matrix([sympy.cos(t), sympy.sin(t)])
+    rad = math.radians(float(degrees or 0.0))
+    return sympy.Matrix([exact_float(math.cos(rad)), exact_float(math.sin(rad))])
 
 
 def _perp(v: sympy.Matrix) -> sympy.Matrix:

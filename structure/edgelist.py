@@ -40,12 +40,22 @@ from pathlib import Path
 from .errors import EdgeListError, EdgeListProblem
 from .expressions import read_number
 from .jsonformat import mechanism_from_json
-from .model import DRIVER_KEYS, Driver, Mechanism, Pair, PointDef, pair_from_tokens, validated
+from .model import (
+    DRIVER_KEYS,
+    LOAD_KINDS,
+    Driver,
+    Load,
+    Mechanism,
+    Pair,
+    PointDef,
+    pair_from_tokens,
+    validated,
+)
 from .utils import paused_gc
 
 __all__ = ["pair_tokens", "parse_edgelist", "read_edgelist", "write_edgelist"]
 
-_KEYWORDS = ("name", "ground", "driver", "point")
+_KEYWORDS = ("name", "ground", "driver", "point", *LOAD_KINDS)
 
 
 def _number(text: str) -> float:
@@ -69,6 +79,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         a cycle, a link or driver not joined to the ground, an empty file.
     """
     problems: list[EdgeListProblem] = []
+    loads: list[Load] = []
     pairs: list[Pair] = []
     drivers: list[Driver] = []
     points: dict[str, PointDef] = {}
@@ -104,6 +115,12 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
                     problems.append(EdgeListProblem(line_no, raw, why))
                 else:
                     drivers.append(driver)
+            elif head in LOAD_KINDS:
+                load, why = _load(tokens, line_no)
+                if load is None:
+                    problems.append(EdgeListProblem(line_no, raw, why))
+                else:
+                    loads.append(load)
             else:
                 point, why = _point(tokens, line_no)
                 if point is None:
@@ -126,9 +143,56 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
     if problems:
         raise EdgeListError(source, problems)
     mechanism = Mechanism(
-        tuple(pairs), ground if ground is not None else "0", tuple(drivers), points, name, source
+        tuple(pairs),
+        ground if ground is not None else "0",
+        tuple(drivers),
+        points,
+        name,
+        source,
+        tuple(loads),
     )
     return validated(mechanism, ground_line=ground_line)
+
+
+_LOAD_USAGE = {
+    "force": "force LINK POINT fx fy",
+    "moment": "moment LINK M",
+    "mass": "mass LINK m J S",
+    "gravity": "gravity gx gy",
+    "balance": "balance LINK POINT angle=DEG",
+}
+
+
+def _load(tokens: list[str], line_no: int) -> tuple[Load | None, str]:
+    kind = tokens[0]
+    usage = f"expected '{_LOAD_USAGE[kind]}'"
+    try:
+        if kind == "gravity":
+            if len(tokens) != 3:
+                return None, usage
+            return Load(kind, "", None, (_number(tokens[1]), _number(tokens[2])), line_no), ""
+        if kind == "moment":
+            if len(tokens) != 3:
+                return None, usage
+            return Load(kind, tokens[1], None, (_number(tokens[2]),), line_no), ""
+        if kind == "force":
+            if len(tokens) != 5:
+                return None, usage
+            values = (_number(tokens[3]), _number(tokens[4]))
+            return Load(kind, tokens[1], tokens[2], values, line_no), ""
+        if kind == "mass":
+            if len(tokens) != 5:
+                return None, usage
+            m, inertia = _number(tokens[2]), _number(tokens[3])
+            if m < 0 or inertia < 0:
+                return None, "mass and moment of inertia cannot be negative"
+            return Load(kind, tokens[1], tokens[4], (m, inertia), line_no), ""
+        key, eq, value = tokens[3].partition("=") if len(tokens) == 4 else ("", "", "")
+        if key != "angle" or not eq:
+            return None, usage
+        return Load(kind, tokens[1], tokens[2], (_number(value),), line_no), ""
+    except ValueError:
+        return None, f"{usage}: numbers must be finite"
 
 
 def _driver(tokens: list[str], line_no: int) -> tuple[Driver | None, str]:
@@ -214,4 +278,5 @@ def write_edgelist(mechanism: Mechanism) -> str:
     out.extend(d.statement for d in mechanism.drivers)
     out.extend(p.statement for p in mechanism.pairs)
     out.extend(p.statement for p in mechanism.points.values())
+    out.extend(load.statement for load in mechanism.loads)
     return "\n".join(out) + "\n"

@@ -24,7 +24,17 @@ from typing import Any
 
 from .errors import EdgeListError, EdgeListProblem
 from .expressions import read_number
-from .model import DRIVER_KEYS, Driver, Mechanism, Pair, PointDef, pair_from_tokens, validated
+from .model import (
+    DRIVER_KEYS,
+    LOAD_KINDS,
+    Driver,
+    Load,
+    Mechanism,
+    Pair,
+    PointDef,
+    pair_from_tokens,
+    validated,
+)
 
 __all__ = ["mechanism_from_dict", "mechanism_from_json", "mechanism_to_dict", "mechanism_to_json"]
 
@@ -83,7 +93,7 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
 
     if not isinstance(data, dict):
         raise EdgeListError(source, [EdgeListProblem(0, "", "the top level must be an object")])
-    unknown = set(data) - {"name", "ground", "drivers", "pairs", "points"}
+    unknown = set(data) - {"name", "ground", "drivers", "pairs", "points", "loads"}
     if unknown:
         bad("top level", f"unknown keys {sorted(unknown)}")
     name = data.get("name", "")
@@ -219,9 +229,42 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
             bad(where, "must be [x, y] with finite numbers or exact expressions like '0.2*sqrt(3)'")
             continue
         points[str(key)] = PointDef(str(key), coords[0], coords[1], on, 0, (exact[0], exact[1]))
+    loads: list[Load] = []
+    raw_loads = data.get("loads", [])
+    if not isinstance(raw_loads, list):
+        bad("loads", "must be a list")
+        raw_loads = []
+    for i, item in enumerate(raw_loads):
+        where = f"loads[{i}]"
+        if not isinstance(item, dict) or item.get("kind") not in LOAD_KINDS:
+            bad(where, f"must be an object with kind one of {', '.join(LOAD_KINDS)}")
+            continue
+        kind = item["kind"]
+        point_role, _ = LOAD_KINDS[kind]
+        values = item.get("values", [])
+        link = item.get("link", "")
+        point = item.get("point")
+        if (
+            not isinstance(values, list)
+            or not all(map(_is_number, values))
+            or (kind != "gravity" and not _is_name(link))
+            or (point_role and not _is_name(point))
+        ):
+            bad(where, "needs 'link', 'point' (force, mass, balance) and finite 'values'")
+            continue
+        loads.append(
+            Load(
+                kind,
+                _text(link) if kind != "gravity" else "",
+                _text(point) if point_role else None,
+                tuple(float(v) for v in values),
+            )
+        )
     if problems:
         raise EdgeListError(source, problems)
-    mechanism = Mechanism(tuple(pairs), _text(ground), tuple(drivers), points, name, source)
+    mechanism = Mechanism(
+        tuple(pairs), _text(ground), tuple(drivers), points, name, source, tuple(loads)
+    )
     return validated(mechanism)
 
 
@@ -252,6 +295,11 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
             item["centers"] = list(p.centers)
         pairs.append(item)
     out["pairs"] = pairs
+    if mechanism.loads:
+        out["loads"] = [
+            {"kind": x.kind, "link": x.link, "point": x.point, "values": list(x.values)}
+            for x in mechanism.loads
+        ]
     if mechanism.points:
         out["points"] = {}
         for p in mechanism.points.values():

@@ -32,8 +32,10 @@ from .errors import EdgeListError, EdgeListProblem
 
 __all__ = [
     "DRIVER_KEYS",
+    "LOAD_KINDS",
     "Driver",
     "Hinge",
+    "Load",
     "Mechanism",
     "Pair",
     "PairKind",
@@ -188,6 +190,46 @@ class PointDef:
         return f"point {self.name} {x} {y}{on}"
 
 
+#: load statements and the numbers each takes after its link (and point)
+LOAD_KINDS = {
+    "force": ("point", 2),  # force LINK POINT fx fy (N, world frame)
+    "moment": (None, 1),  # moment LINK M (N·m, counter-clockwise positive)
+    "mass": ("point", 2),  # mass LINK m J S  (kg, kg·m² about the centre of mass S)
+    "gravity": (None, 2),  # gravity gx gy (m/s²), no link
+    "balance": ("point", 0),  # balance LINK POINT angle=DEG: a balancing force, not a moment
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Load:
+    """A load statement: ``force``, ``moment``, ``mass``, ``gravity`` or ``balance``.
+
+    ``values`` holds its numbers in the order of the statement (``fx, fy``;
+    ``M``; ``m, J``; ``gx, gy``; the direction in degrees for ``balance``).
+    """
+
+    kind: str
+    link: str
+    point: str | None
+    values: tuple[float, ...]
+    line_no: int = field(default=0, compare=False)
+
+    @property
+    def statement(self) -> str:
+        """The canonical load line."""
+        if self.kind == "gravity":
+            return "gravity " + " ".join(number_text(v) for v in self.values)
+        head = [self.kind, self.link] + ([self.point] if self.point else [])
+        if self.kind == "balance":
+            return " ".join([*head, f"angle={number_text(self.values[0])}"])
+        if self.kind == "mass":
+            m, inertia = self.values
+            return " ".join(
+                [self.kind, self.link, number_text(m), number_text(inertia), self.point or ""]
+            ).strip()
+        return " ".join([*head, *(number_text(v) for v in self.values)])
+
+
 @dataclass(frozen=True, slots=True)
 class Driver:
     """A driving link and its prescribed motion (``omega``, ``epsilon``, ``v``, ``a``)."""
@@ -237,6 +279,7 @@ class Mechanism:
     points: Mapping[str, PointDef] = field(default_factory=dict)
     name: str = ""
     source: str = "<python>"
+    loads: tuple[Load, ...] = ()
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
     hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
@@ -317,6 +360,7 @@ class Mechanism:
             "points": self.points,
             "name": self.name,
             "source": self.source,
+            "loads": self.loads,
         }
         fields.update(changes)
         if "drivers" in changes:
@@ -565,6 +609,11 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
         for key, _ in d.motion:
             if key not in DRIVER_KEYS:
                 bad(d.line_no, f"unknown driver option {key!r} (use {', '.join(DRIVER_KEYS)})")
+    for load in m.loads:
+        if load.kind != "gravity" and load.link not in m._by_link:
+            bad(load.line_no, f"{load.kind} on unknown link {load.link}", load.statement)
+        elif load.kind != "gravity" and load.link == m.ground and load.kind != "balance":
+            bad(load.line_no, f"a {load.kind} on the ground does nothing", load.statement)
     for p in m.points.values():
         if not (math.isfinite(p.x) and math.isfinite(p.y)):
             bad(p.line_no, f"point {p.name} has non-finite coordinates", p.statement)

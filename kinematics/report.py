@@ -14,9 +14,37 @@ from __future__ import annotations
 from typing import Any
 
 from .exact import ExactState
+from .forces import ForceSolution
 from .solve import KinematicState
 
-__all__ = ["exact_to_dict", "state_to_dict"]
+__all__ = ["exact_to_dict", "forces_to_dict", "state_to_dict"]
+
+
+def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
+    """The JSON form: balancing moment, reactions (point, links, force, magnitude), residual."""
+    out: dict[str, Any] = {
+        "order": list(result.order),
+        "balancing_moment": (
+            next(iter(result.balancing_moment.values()))
+            if len(result.balancing_moment) == 1
+            else dict(result.balancing_moment)
+        ),
+        "reactions": [
+            {
+                "point": r.point,
+                "links": list(r.links),
+                "kind": r.kind,
+                "force": r.force.tolist(),
+                "magnitude": r.magnitude,
+                **({"couple": r.couple} if r.kind == "P" else {}),
+            }
+            for r in result.reactions
+        ],
+        "power_residual": result.power_residual,
+    }
+    if result.balancing_force is not None:
+        out["balancing_force"] = result.balancing_force.tolist()
+    return out
 
 
 def exact_to_dict(state: ExactState) -> dict[str, Any]:

@@ -8,14 +8,16 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from collections.abc import Sequence
 
 import numpy as np
 
 from kinematics.exact import solve_exact
+from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
-from kinematics.report import exact_to_dict, state_to_dict
+from kinematics.report import exact_to_dict, forces_to_dict, state_to_dict
 from kinematics.solve import solve_pose
 from kinematics.sweep import sweep
 
@@ -68,6 +70,14 @@ def _parser() -> argparse.ArgumentParser:
         metavar="GROUP",
         default=[],
         help="assemble this dyad (e.g. 'II(2,3)') in the other mode than the sketch's",
+    )
+    fo = sub.add_parser("forces", help="joint reactions and balancing moment, farthest group first")
+    fo.add_argument("file", help="edge-list file with coordinates, driver motion and loads")
+    fo.add_argument("--json", action="store_true", help="print one JSON object")
+    fo.add_argument(
+        "--minimum-norm",
+        action="store_true",
+        help="for an over-constrained mechanism, give the minimum-norm reactions",
     )
     sw = sub.add_parser("sweep", help="the kinematics over a whole turn of the driver(s)")
     sw.add_argument("file", help="edge-list file with point coordinates and driver motion")
@@ -173,6 +183,40 @@ def _print_exact(report, plan, as_json: bool) -> int:
     return 0
 
 
+def _forces(args: argparse.Namespace) -> int:
+    try:
+        report = analyze(read_edgelist(args.file))
+        result = solve_forces(make_plan(report), minimum_norm=args.minimum_norm)
+    except MechanismError as exc:
+        if args.json:
+            print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
+        sys.stderr.write(f"error: {exc}\n")
+        return 1
+    if args.json:
+        print(json.dumps(forces_to_dict(result), indent=2, ensure_ascii=False))
+        return 0
+    m = report.mechanism
+    out = [f"{m.name or 'mechanism'}  ({m.source})", ""]
+    out.append("Solved in this order (farthest group first): " + " → ".join(result.order))
+    out.append("")
+    out.append("Reactions (the force the first link exerts on the second):")
+    for r in result.reactions:
+        angle = math.degrees(math.atan2(r.force[1], r.force[0]))
+        couple = f", couple {r.couple:.6g} N·m" if r.kind == "P" else ""
+        out.append(
+            f"  {r.point or '?'} ({r.links[0]} on {r.links[1]}, {r.kind}): "
+            f"F = {_vector(r.force)} N, |F| = {r.magnitude:.6g} N at {angle:.4g}°{couple}"
+        )
+    out.append("")
+    for link, value in result.balancing_moment.items():
+        out.append(f"Balancing moment on driver {link}: {value:.6g} N·m (counter-clockwise +)")
+    if result.balancing_force is not None:
+        out.append(f"Balancing force: {_vector(result.balancing_force)} N")
+    out.append(f"Virtual-power check: residual {result.power_residual:.2e} of the largest term")
+    sys.stdout.write("\n".join(out) + "\n")
+    return 0
+
+
 def _sweep(args: argparse.Namespace) -> int:
     if args.steps < 1:
         sys.stderr.write("error: --steps must be at least 1\n")
@@ -215,6 +259,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _kinematics(args)
     if args.command == "sweep":
         return _sweep(args)
+    if args.command == "forces":
+        return _forces(args)
     parser.error(f"unknown command {args.command}")
     return 2
 

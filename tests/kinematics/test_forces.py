@@ -1,0 +1,133 @@
+"""Kinetostatics: reactions and balancing moment, checked by statics by hand and by virtual power."""
+
+from __future__ import annotations
+
+import json
+import math
+import random
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from kinematics.forces import IndeterminateError, solve_forces
+from kinematics.plan import make_plan
+from kinematics.solve import SingularPoseError
+from structure.cli import main
+from structure.edgelist import parse_edgelist, write_edgelist
+from structure.generators import random_mechanism
+from structure.model import Load, PointDef
+from structure.report import analyze
+
+from ..conftest import FIXTURES
+
+
+def forces_of(text: str, **kw):
+    return solve_forces(make_plan(analyze(parse_edgelist(text.strip().splitlines()))), **kw)
+
+
+SQUARE = """
+driver 1 omega=10
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0 0.1
+point C 0.1 0.1
+point D 0.1 0
+point E 0.1 0.05 on=3
+force 3 E 1000 0
+"""
+
+
+def reaction(result, point):
+    (r,) = [x for x in result.reactions if x.point == point]
+    return r
+
+
+def test_square_four_bar_by_hand():
+    # BC is a two-force member along x; moments about D on the rocker: 0.05·1000 = 0.1·F,
+    # so the coupler pulls the rocker with 500 N toward −x, and the crank needs 0.1·500 = 50 N·m
+    result = forces_of(SQUARE)
+    assert result.balancing_moment["1"] == pytest.approx(50.0)
+    c = reaction(result, "C")
+    force_on_3 = c.force if c.links == ("2", "3") else -c.force
+    np.testing.assert_allclose(force_on_3, [-500.0, 0.0], atol=1e-9)
+    d = reaction(result, "D")
+    force_on_ground = d.force if d.links == ("3", "0") else -d.force
+    np.testing.assert_allclose(force_on_ground, [500.0, 0.0], atol=1e-9)
+    assert result.power_residual < 1e-12
+    assert result.order == ("II(2,3)", "I(1)")
+
+
+def test_crank_slider_balancing_moment_by_hand():
+    # crank AB = 0.1 along +y, rod BC = 0.2 to C = (√0.03, 0) on the slide y = 0. The rod is a
+    # two-force member: to balance 100 N along −x on the slider it pushes the slider with
+    # +100 N in x, so it pushes the crank at B with −100 N in x (and some y, through A's
+    # height 0): moment about A = (0, 0.1) × (−100, F_y) = +10 N·m, so M_b = −10 N·m.
+    cx = math.sqrt(0.03)
+    text = f"""
+driver 1 omega=1
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 P C angle=0
+point A 0 0
+point B 0 0.1
+point C {cx!r} 0
+force 3 C -100 0
+"""
+    result = forces_of(text)
+    assert result.balancing_moment["1"] == pytest.approx(-10.0, rel=1e-12)
+    assert result.power_residual < 1e-12
+
+
+def test_balancing_force_instead_of_a_moment():
+    text = SQUARE + "balance 1 B angle=0\n"
+    result = forces_of(text)
+    assert result.balancing_moment == {}
+    # the moment 50 N·m about A from a force at B (0, 0.1) along x: −0.1·F = 50
+    np.testing.assert_allclose(result.balancing_force, [-500.0, 0.0], atol=1e-9)
+
+
+def test_over_constrained_reactions_are_indeterminate():
+    text = (FIXTURES / "parallelogram_redundant.edges").read_text()
+    with pytest.raises(IndeterminateError, match="indeterminate"):
+        forces_of(text + "\nforce 3 C 100 0\n")
+    result = forces_of(text + "\nforce 3 C 100 0\n", minimum_norm=True)
+    assert result.power_residual < 1e-9
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(seed=st.integers(0, 10_000), n=st.integers(3, 12))
+def test_balancing_moment_equals_virtual_power(seed, n):
+    """Random dyad mechanisms, random sketch, random loads: the group-by-group balancing
+    moment equals the one from virtual power (Σ P·v + Σ M·ω + M_b·ω1 = 0)."""
+    rng = random.Random(seed)
+    m = random_mechanism(n, seed, kinds=("RRR", "RRP", "RPR", "PRP", "RPP"))
+    names = {p.point for p in m.pairs if p.point}
+    points = {x: PointDef(x, rng.uniform(-1, 1), rng.uniform(-1, 1)) for x in sorted(names)}
+    loads = []
+    for link in m.moving_links:
+        pin = next(p.point for p in m.pairs_of(link) if p.point)
+        loads.append(Load("force", link, pin, (rng.uniform(-100, 100), rng.uniform(-100, 100))))
+        loads.append(Load("moment", link, None, (rng.uniform(-10, 10),)))
+    text = write_edgelist(m.evolve(points=points, loads=tuple(loads)))
+    text = text.replace("driver 1\n", "driver 1 omega=3\n")
+    try:
+        result = forces_of(text)
+    except SingularPoseError:
+        assume(False)
+    assert result.power_residual < 1e-9
+
+
+def test_cli_forces_json(capsys, tmp_path):
+    path = tmp_path / "square.edges"
+    path.write_text(SQUARE)
+    assert main(["forces", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["balancing_moment"] == pytest.approx(50.0)
+    assert {"point", "links", "force", "magnitude"} <= set(data["reactions"][0])
+    assert data["power_residual"] < 1e-12

@@ -1,4 +1,4 @@
-"""Kinetostatics: reactions and balancing moment, checked by statics by hand and by virtual power."""
+"""Kinetostatics: reactions and balancing moment, by hand statics and by virtual power."""
 
 from __future__ import annotations
 

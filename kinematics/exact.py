@@ -29,9 +29,10 @@ import sympy
 from structure.expressions import exact_float, exact_value
 from structure.model import Mechanism
 
-from .plan import GroupStep, SolvePlan
+from .forces import IndeterminateError, ground_equations
+from .plan import SolvePlan
 
-__all__ = ["ExactState", "solve_exact"]
+__all__ = ["ExactForces", "ExactState", "forces_exact", "solve_exact"]
 
 
 @dataclass(frozen=True)
@@ -45,6 +46,8 @@ class ExactState:
     links: Mapping[str, Mapping[str, sympy.Expr]]
     points: Mapping[str, Mapping[str, tuple[sympy.Expr, sympy.Expr]]]
     drivers: Mapping[str, tuple[sympy.Expr, sympy.Expr]]
+    q_dot: Mapping[str, sympy.Matrix]
+    q_ddot: Mapping[str, sympy.Matrix]
 
 
 def _exact_point(m: Mechanism, name: str | None) -> sympy.Matrix:
@@ -82,11 +85,11 @@ def _perp(v: sympy.Matrix) -> sympy.Matrix:
     return sympy.Matrix([-v[1], v[0]])
 
 
-def _rows(step: GroupStep, plan: SolvePlan):
-    """Exact (partials of a, partials of b, kind, point, normal) of each equation at q = 0."""
+def _rows(equations, plan: SolvePlan):
+    """Exact (equation, partials of a, partials of b, point, normal) of each equation at q = 0."""
     m = plan.mechanism
     out = []
-    for eq in step.equations:
+    for eq in equations:
         pair = m.pair(eq.pair) if eq.pair else None
         # a compound hinge's canonical pair has no id: the sketch point is the same pin
         name = pair.point if pair is not None else _name_of(m, eq.point)
@@ -147,7 +150,7 @@ def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
     for step in plan.steps:
         links = step.links
         index = {link: i for i, link in enumerate(links)}
-        rows = _rows(step, plan)
+        rows = _rows(step.equations, plan)
         size = sum(eq.size for eq, *_ in rows)
         jac = sympy.zeros(size, 3 * len(links))
         rhs_v = sympy.zeros(size, 1)
@@ -189,7 +192,149 @@ def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
             "velocity": (sympy.simplify(vel[0]), sympy.simplify(vel[1])),
             "acceleration": (sympy.simplify(acc[0]), sympy.simplify(acc[1])),
         }
-    return ExactState(links, points, drivers)
+    return ExactState(links, points, drivers, qd, qdd)
+
+
+@dataclass(frozen=True)
+class ExactForces:
+    """Exact reactions (point, links, kind, force on links[1] by links[0], couple) and balance."""
+
+    reactions: tuple[tuple[str | None, tuple[str, str], str, tuple, sympy.Expr], ...]
+    balancing_moment: Mapping[str, sympy.Expr]
+    balancing_force: tuple[sympy.Expr, sympy.Expr] | None
+
+
+def _exact_loads(plan: SolvePlan, kin: ExactState) -> dict[str, sympy.Matrix]:
+    """Exact generalized loads (Fx, Fy, moment about the world origin) per link at the sketch."""
+    m = plan.mechanism
+    out: dict[str, sympy.Matrix] = {}
+    gravity = sympy.zeros(2, 1)
+    for load in m.loads:
+        if load.kind == "gravity":
+            gravity = sympy.Matrix([exact_float(v) for v in load.values])
+
+    def add(link: str, value: sympy.Matrix) -> None:
+        out[link] = out.get(link, sympy.zeros(3, 1)) + value
+
+    for load in m.loads:
+        if load.kind == "force":
+            c = _exact_point(m, load.point)
+            f = sympy.Matrix([exact_float(v) for v in load.values])
+            add(load.link, sympy.Matrix([f[0], f[1], c[0] * f[1] - c[1] * f[0]]))
+        elif load.kind == "moment":
+            add(load.link, sympy.Matrix([0, 0, exact_float(load.values[0])]))
+        elif load.kind == "mass":
+            mass, inertia = (exact_float(v) for v in load.values)
+            c = _exact_point(m, load.point)
+            v, a = kin.q_dot[load.link], kin.q_ddot[load.link]
+            a_s = a[:2, 0] + a[2] * _perp(c) - v[2] ** 2 * c
+            f = mass * (gravity - a_s)
+            add(load.link, sympy.Matrix([f[0], f[1], c[0] * f[1] - c[1] * f[0] - inertia * a[2]]))
+    return out
+
+
+def _exact_reactions(rows, lam: sympy.Matrix) -> list:
+    out = []
+    couple = sympy.Integer(0)
+    r = 0
+    for eq, _, jb, _c, _ in rows:
+        value = lam[r : r + eq.size, 0]
+        r += eq.size
+        on_b = jb.T * value
+        if eq.kind == "HINGE":
+            out.append(
+                (eq, (eq.a, eq.b), "R", (sympy.simplify(on_b[0]), sympy.simplify(on_b[1])), 0)
+            )
+        elif eq.kind == "ANGLE":
+            couple = sympy.simplify(on_b[2])
+        else:
+            force = (sympy.simplify(on_b[0]), sympy.simplify(on_b[1]))
+            out.append((eq, (eq.a, eq.b), "P", force, couple))
+            couple = sympy.Integer(0)
+    return out
+
+
+def forces_exact(plan: SolvePlan) -> ExactForces:
+    """Exact reactions and balancing moment at the sketch pose (see :mod:`kinematics.forces`).
+
+    >>> from structure.edgelist import parse_edgelist
+    >>> from structure.report import analyze
+    >>> from kinematics.plan import make_plan
+    >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0",
+    ...                     "point B 0.1 0.1", "force 1 B 0 -100"])
+    >>> forces_exact(make_plan(analyze(m))).balancing_moment["1"]
+    10
+
+    Raises
+    ------
+    MechanismError
+        A redundant link: the reactions are indeterminate.
+    """
+    if any(s.group is None for s in plan.steps):
+        raise IndeterminateError("the mechanism is over-constrained: reactions are indeterminate")
+    m = plan.mechanism
+    kin = solve_exact(plan)
+    loads = _exact_loads(plan, kin)
+    carried: dict[str, sympy.Matrix] = {}
+    reactions = []
+    for step in reversed(plan.steps):
+        rows = _rows(step.equations, plan)
+        index = {link: i for i, link in enumerate(step.links)}
+        size = sum(eq.size for eq, *_ in rows)
+        jt = sympy.zeros(3 * len(index), size)
+        r = 0
+        for eq, ja, jb, _, _ in rows:
+            for link, part in ((eq.a, ja), (eq.b, jb)):
+                if link in index:
+                    jt[3 * index[link] : 3 * index[link] + 3, r : r + eq.size] = part.T
+            r += eq.size
+        rhs = sympy.Matrix.vstack(
+            *[-(loads.get(x, sympy.zeros(3, 1)) + carried.get(x, sympy.zeros(3, 1))) for x in index]
+        )
+        lam = jt.LUsolve(rhs)
+        r = 0
+        for eq, ja, jb, _, _ in rows:
+            value = lam[r : r + eq.size, 0]
+            for link, part in ((eq.a, ja), (eq.b, jb)):
+                if link not in index:
+                    carried[link] = carried.get(link, sympy.zeros(3, 1)) + part.T * value
+            r += eq.size
+        reactions.extend(_exact_reactions(rows, lam))
+    moments: dict[str, sympy.Expr] = {}
+    balancing_force = None
+    balance = {x.link: x for x in m.loads if x.kind == "balance"}
+    for d in plan.drivers:
+        rows = _rows(ground_equations(plan, d.link), plan)
+        cols = [ja.T for _, ja, _, _, _ in rows]
+        load = balance.get(d.link)
+        if load is not None:
+            u = _unit(load.values[0])
+            c = _exact_point(m, load.point)
+            drive = sympy.Matrix([u[0], u[1], c[0] * u[1] - c[1] * u[0]])
+        elif d.kind == "R":
+            drive = sympy.Matrix([0, 0, 1])
+        else:
+            drive = sympy.Matrix(
+                [
+                    *_unit(
+                        next(p for p in m.pairs_of(d.link) if p.other(d.link) == m.ground).angle_deg
+                    ),
+                    0,
+                ]
+            )
+        jt = sympy.Matrix.hstack(*cols, drive)
+        total = loads.get(d.link, sympy.zeros(3, 1)) + carried.get(d.link, sympy.zeros(3, 1))
+        lam = jt.LUsolve(-total)
+        reactions.extend(_exact_reactions(rows, lam[:-1, 0]))
+        if load is not None:
+            balancing_force = (sympy.simplify(lam[-1] * u[0]), sympy.simplify(lam[-1] * u[1]))
+        else:
+            moments[d.link] = sympy.simplify(lam[-1])
+    out = tuple(
+        (m.pair(eq.pair).point if eq.pair else _name_of(m, eq.point), links, kind, force, couple)
+        for eq, links, kind, force, couple in reactions
+    )
+    return ExactForces(out, moments, balancing_force)
 
 
 def _solve(jac: sympy.Matrix, rhs: sympy.Matrix) -> sympy.Matrix:

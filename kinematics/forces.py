@@ -41,7 +41,7 @@ from .equations import Equation, evaluate
 from .plan import SolvePlan
 from .solve import KinematicState, solve_pose
 
-__all__ = ["ForceSolution", "IndeterminateError", "Reaction", "solve_forces"]
+__all__ = ["ForceSolution", "IndeterminateError", "Reaction", "ground_equations", "solve_forces"]
 
 
 class IndeterminateError(MechanismError):
@@ -188,7 +188,7 @@ def solve_forces(
         link = d.link
         st = state.links[link]
         total = applied.get(link, np.zeros(3)) + carried.get(link, np.zeros(3))
-        ground_eqs = _ground_equations(plan, link)
+        ground_eqs = ground_equations(plan, link)
         cols = []
         ground_parts = []
         r0 = 0
@@ -226,7 +226,7 @@ def solve_forces(
     return ForceSolution(tuple(reactions), balancing, balancing_force, residual, tuple(order))
 
 
-def _ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
+def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
     """The equations of a driver's pair with the ground."""
     m = plan.mechanism
     for p in m.pairs_of(link):

@@ -13,11 +13,35 @@ from __future__ import annotations
 
 from typing import Any
 
-from .exact import ExactState
+from .exact import ExactForces, ExactState
 from .forces import ForceSolution
 from .solve import KinematicState
 
-__all__ = ["exact_to_dict", "forces_to_dict", "state_to_dict"]
+__all__ = ["exact_forces_to_dict", "exact_to_dict", "forces_to_dict", "state_to_dict"]
+
+
+def _both(x: Any) -> dict[str, Any]:
+    return {"value": str(x), "float": float(x)}
+
+
+def exact_forces_to_dict(result: ExactForces) -> dict[str, Any]:
+    """Exact reactions and balancing moment, each as ``{"value": "50*sqrt(2)", "float": ...}``."""
+    out: dict[str, Any] = {
+        "balancing_moment": {k: _both(v) for k, v in result.balancing_moment.items()},
+        "reactions": [
+            {
+                "point": point,
+                "links": list(links),
+                "kind": kind,
+                "force": [_both(f) for f in force],
+                **({"couple": _both(couple)} if kind == "P" else {}),
+            }
+            for point, links, kind, force, couple in result.reactions
+        ],
+    }
+    if result.balancing_force is not None:
+        out["balancing_force"] = [_both(f) for f in result.balancing_force]
+    return out
 
 
 def forces_to_dict(result: ForceSolution) -> dict[str, Any]:

@@ -14,10 +14,15 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from kinematics.exact import solve_exact
+from kinematics.exact import forces_exact, solve_exact
 from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
-from kinematics.report import exact_to_dict, forces_to_dict, state_to_dict
+from kinematics.report import (
+    exact_forces_to_dict,
+    exact_to_dict,
+    forces_to_dict,
+    state_to_dict,
+)
 from kinematics.solve import solve_pose
 from kinematics.sweep import sweep
 
@@ -74,6 +79,9 @@ def _parser() -> argparse.ArgumentParser:
     fo = sub.add_parser("forces", help="joint reactions and balancing moment, farthest group first")
     fo.add_argument("file", help="edge-list file with coordinates, driver motion and loads")
     fo.add_argument("--json", action="store_true", help="print one JSON object")
+    fo.add_argument(
+        "--exact", action="store_true", help="exact values (radicals, fractions) with sympy"
+    )
     fo.add_argument(
         "--minimum-norm",
         action="store_true",
@@ -186,6 +194,8 @@ def _print_exact(report, plan, as_json: bool) -> int:
 def _forces(args: argparse.Namespace) -> int:
     try:
         report = analyze(read_edgelist(args.file))
+        if args.exact:
+            return _print_exact_forces(report, make_plan(report), args.json)
         result = solve_forces(make_plan(report), minimum_norm=args.minimum_norm)
     except MechanismError as exc:
         if args.json:
@@ -213,6 +223,27 @@ def _forces(args: argparse.Namespace) -> int:
     if result.balancing_force is not None:
         out.append(f"Balancing force: {_vector(result.balancing_force)} N")
     out.append(f"Virtual-power check: residual {result.power_residual:.2e} of the largest term")
+    sys.stdout.write("\n".join(out) + "\n")
+    return 0
+
+
+def _print_exact_forces(report, plan, as_json: bool) -> int:
+    result = forces_exact(plan)
+    if as_json:
+        print(json.dumps(exact_forces_to_dict(result), indent=2, ensure_ascii=False))
+        return 0
+    m = report.mechanism
+    out = [f"{m.name or 'mechanism'}  ({m.source}), exact values at the sketch pose", ""]
+    for point, links, kind, force, couple in result.reactions:
+        extra = f", couple {couple} N·m" if kind == "P" else ""
+        out.append(
+            f"  {point} ({links[0]} on {links[1]}, {kind}): F = ({force[0]}, {force[1]}) N{extra}"
+        )
+    for link, value in result.balancing_moment.items():
+        out.append(f"Balancing moment on driver {link}: {value} N·m")
+    if result.balancing_force is not None:
+        f = result.balancing_force
+        out.append(f"Balancing force: ({f[0]}, {f[1]}) N")
     sys.stdout.write("\n".join(out) + "\n")
     return 0
 

@@ -209,9 +209,14 @@ def _exact_loads(plan: SolvePlan, kin: ExactState) -> dict[str, sympy.Matrix]:
     m = plan.mechanism
     out: dict[str, sympy.Matrix] = {}
     gravity = sympy.zeros(2, 1)
+
+    def number(load, k: int) -> sympy.Expr:
+        written = load.exact[k] if k < len(load.exact) else None
+        return exact_value(written) if written else exact_float(load.values[k])
+
     for load in m.loads:
         if load.kind == "gravity":
-            gravity = sympy.Matrix([exact_float(v) for v in load.values])
+            gravity = sympy.Matrix([number(load, 0), number(load, 1)])
 
     def add(link: str, value: sympy.Matrix) -> None:
         out[link] = out.get(link, sympy.zeros(3, 1)) + value
@@ -219,12 +224,12 @@ def _exact_loads(plan: SolvePlan, kin: ExactState) -> dict[str, sympy.Matrix]:
     for load in m.loads:
         if load.kind == "force":
             c = _exact_point(m, load.point)
-            f = sympy.Matrix([exact_float(v) for v in load.values])
+            f = sympy.Matrix([number(load, 0), number(load, 1)])
             add(load.link, sympy.Matrix([f[0], f[1], c[0] * f[1] - c[1] * f[0]]))
         elif load.kind == "moment":
-            add(load.link, sympy.Matrix([0, 0, exact_float(load.values[0])]))
+            add(load.link, sympy.Matrix([0, 0, number(load, 0)]))
         elif load.kind == "mass":
-            mass, inertia = (exact_float(v) for v in load.values)
+            mass, inertia = number(load, 0), number(load, 1)
             c = _exact_point(m, load.point)
             v, a = kin.q_dot[load.link], kin.q_ddot[load.link]
             a_s = a[:2, 0] + a[2] * _perp(c) - v[2] ** 2 * c

@@ -37,11 +37,19 @@ import numpy as np
 
 from structure.errors import MechanismError
 
-from .equations import Equation, evaluate
+from .equations import Equation, evaluate, rotate_many
 from .plan import SolvePlan
-from .solve import KinematicState, solve_pose
+from .solve import Motion, solve_poses
 
-__all__ = ["ForceSolution", "IndeterminateError", "Reaction", "ground_equations", "solve_forces"]
+__all__ = [
+    "ForceSolution",
+    "ForceSweep",
+    "IndeterminateError",
+    "Reaction",
+    "forces_over",
+    "ground_equations",
+    "solve_forces",
+]
 
 
 class IndeterminateError(MechanismError):
@@ -74,60 +82,187 @@ class ForceSolution:
     order: tuple[str, ...]
 
 
-def _applied(plan: SolvePlan, state: KinematicState) -> dict[str, np.ndarray]:
-    """Generalized applied and inertia forces (Fx, Fy, moment about the frame origin) per link."""
+@dataclass(frozen=True)
+class ForceSweep:
+    """Reactions and balancing over many poses: arrays with a leading pose axis."""
+
+    inputs: np.ndarray
+    reactions: tuple[tuple[str | None, tuple[str, str], str, np.ndarray, np.ndarray], ...]
+    balancing_moment: Mapping[str, np.ndarray]
+    balancing_force: np.ndarray | None
+    power_residual: np.ndarray
+    order: tuple[str, ...]
+
+
+def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
+    """Generalized applied and inertia loads (Fx, Fy, moment about the frame origin), (N, 3)."""
     m = plan.mechanism
-    q: dict[str, np.ndarray] = {}
+    n = motion.inputs.shape[0]
+    out: dict[str, np.ndarray] = {}
     gravity = np.zeros(2)
     for load in m.loads:
         if load.kind == "gravity":
             gravity = np.array(load.values)
 
-    def at(link: str, point: str | None) -> np.ndarray:
+    def lever(link: str, point: str | None) -> np.ndarray:
         if point is None or m.coordinates(point) is None:
             raise MechanismError(f"point {point} of a load on link {link} needs coordinates")
         c = np.array(m.coordinates(point), dtype=float)
-        x = state.links[link].q if link in state.links else np.zeros(3)
-        cs, sn = math.cos(x[2]), math.sin(x[2])
-        return np.array([cs * c[0] - sn * c[1], sn * c[0] + cs * c[1]])
+        return rotate_many(motion.q[link][:, 2], c)
 
-    def add(link: str, value: np.ndarray) -> None:
-        q[link] = q.get(link, np.zeros(3)) + value
+    def add(link: str, fx: np.ndarray, fy: np.ndarray, moment: np.ndarray) -> None:
+        value = np.column_stack([np.broadcast_to(fx, n), np.broadcast_to(fy, n), moment])
+        out[link] = out.get(link, np.zeros((n, 3))) + value
 
     for load in m.loads:
         if load.kind == "force":
-            r = at(load.link, load.point)
-            f = np.array(load.values)
-            add(load.link, np.array([f[0], f[1], r[0] * f[1] - r[1] * f[0]]))
+            r = lever(load.link, load.point)
+            fx, fy = load.values
+            add(load.link, fx, fy, r[:, 0] * fy - r[:, 1] * fx)
         elif load.kind == "moment":
-            add(load.link, np.array([0.0, 0.0, load.values[0]]))
+            add(load.link, 0.0, 0.0, np.full(n, load.values[0]))
         elif load.kind == "mass":
             mass, inertia = load.values
             link = load.link
-            r = at(link, load.point)
-            st = state.links[link]
-            w, e = st.qd[2], st.qdd[2]
-            jr = np.array([-r[1], r[0]])
-            a_s = st.qdd[:2] + e * jr - w * w * r
+            r = lever(link, load.point)
+            v, a = motion.qd[link], motion.qdd[link]
+            w, e = v[:, 2:3], a[:, 2:3]
+            jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
+            a_s = a[:, :2] + e * jr - w**2 * r
             f = mass * (gravity - a_s)
-            add(link, np.array([f[0], f[1], r[0] * f[1] - r[1] * f[0] - inertia * e]))
-    return q
+            moment = r[:, 0] * f[:, 1] - r[:, 1] * f[:, 0] - inertia * e[:, 0]
+            add(link, f[:, 0], f[:, 1], moment)
+    return out
 
 
-def _parts(eq: Equation, state: KinematicState) -> tuple[np.ndarray, np.ndarray]:
-    zero = np.zeros((1, 3))
+def _parts(eq: Equation, motion: Motion) -> tuple[np.ndarray, np.ndarray]:
+    n = motion.inputs.shape[0]
+    zero = np.zeros((n, 3))
+    _, ja, jb, _ = evaluate(eq, motion.q.get(eq.a, zero), motion.q.get(eq.b, zero), zero, zero)
+    return ja, jb
 
-    def pose(link: str) -> np.ndarray:
-        return state.links[link].q[None, :] if link in state.links else zero
 
-    _, ja, jb, _ = evaluate(eq, pose(eq.a), pose(eq.b), zero, zero)
-    return ja[0], jb[0]
+def _reactions(parts, lam: np.ndarray, m) -> list:
+    """Reactions from the multipliers: what eq.a exerts on eq.b is ∂Φ/∂q_bᵀ·λ.
+
+    A prismatic pair's ANGLE row (a couple) is reported with its SLIDE row.
+    """
+    out = []
+    n = lam.shape[0]
+    couple = np.zeros(n)
+    for eq, _, jb, r0 in parts:
+        value = lam[:, r0 : r0 + eq.size]
+        on_b = np.einsum("nij,ni->nj", jb, value)
+        point = m.pair(eq.pair).point if eq.pair else _hinge_at(m, eq.point)
+        if eq.kind == "HINGE":
+            out.append((point, (eq.a, eq.b), "R", on_b[:, :2].copy(), np.zeros(n)))
+        elif eq.kind == "ANGLE":
+            couple = on_b[:, 2].copy()
+        else:
+            out.append((point, (eq.a, eq.b), "P", on_b[:, :2].copy(), couple))
+            couple = np.zeros(n)
+    return out
+
+
+def forces_over(plan: SolvePlan, motion: Motion, minimum_norm: bool = False) -> ForceSweep:
+    """Reactions and balancing moment at every pose of a solved motion, vectorised.
+
+    Raises
+    ------
+    IndeterminateError
+        The mechanism has redundant constraints and ``minimum_norm`` is false.
+    """
+    redundant = [s.redundant_link for s in plan.steps if s.group is None]
+    if redundant and not minimum_norm:
+        raise IndeterminateError(
+            f"the mechanism is over-constrained (redundant link(s) {', '.join(redundant)}): its "
+            "reactions are statically indeterminate; ask for the minimum-norm solution"
+        )
+    m = plan.mechanism
+    n = motion.inputs.shape[0]
+    applied = _applied(plan, motion)
+    carried: dict[str, np.ndarray] = {}
+    reactions: list = []
+    order: list[str] = []
+    zero3 = np.zeros((n, 3))
+    for step in reversed(plan.steps):
+        links = step.links
+        index = {link: i for i, link in enumerate(links)}
+        rows = sum(eq.size for eq in step.equations)
+        jt = np.zeros((n, 3 * len(links), rows))
+        parts = []
+        r = 0
+        for eq in step.equations:
+            ja, jb = _parts(eq, motion)
+            parts.append((eq, ja, jb, r))
+            for link, part in ((eq.a, ja), (eq.b, jb)):
+                if link in index:
+                    k = 3 * index[link]
+                    jt[:, k : k + 3, r : r + eq.size] += np.transpose(part, (0, 2, 1))
+            r += eq.size
+        rhs = np.concatenate(
+            [-(applied.get(x, zero3) + carried.get(x, zero3)) for x in links], axis=1
+        )
+        if jt.shape[1] == jt.shape[2]:
+            lam = np.linalg.solve(jt, rhs[..., None])[..., 0]
+        else:
+            lam = (np.linalg.pinv(jt) @ rhs[..., None])[..., 0]
+        for eq, ja, jb, r0 in parts:
+            value = lam[:, r0 : r0 + eq.size]
+            for link, part in ((eq.a, ja), (eq.b, jb)):
+                if link not in index:
+                    carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
+        reactions.extend(_reactions(parts, lam, m))
+        order.append(step.label)
+    moments: dict[str, np.ndarray] = {}
+    balancing_force = None
+    balance = {x.link: x for x in m.loads if x.kind == "balance"}
+    power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
+    for d in plan.drivers:
+        link = d.link
+        total = applied.get(link, zero3) + carried.get(link, zero3)
+        parts = []
+        cols = []
+        r0 = 0
+        for eq in ground_equations(plan, link):
+            ja, jb = _parts(eq, motion)
+            parts.append((eq, ja, jb, r0))
+            cols.append(np.transpose(ja, (0, 2, 1)))
+            r0 += eq.size
+        load = balance.get(link)
+        if load is not None:
+            t = math.radians(load.values[0])
+            u = np.array([math.cos(t), math.sin(t)])
+            c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
+            rp = rotate_many(motion.q[link][:, 2], c)
+            drive = np.stack(
+                [np.full(n, u[0]), np.full(n, u[1]), rp[:, 0] * u[1] - rp[:, 1] * u[0]], axis=1
+            )
+        elif d.kind == "R":
+            drive = np.tile([0.0, 0.0, 1.0], (n, 1))
+        else:
+            drive = np.tile([d.direction[0], d.direction[1], 0.0], (n, 1))
+        jt = np.concatenate([*cols, drive[:, :, None]], axis=2)
+        lam = np.linalg.solve(jt, -total[..., None])[..., 0]
+        reactions.extend(_reactions(parts, lam[:, :-1], m))
+        if load is not None:
+            balancing_force = lam[:, -1:] * u[None, :]
+        else:
+            moments[link] = lam[:, -1].copy()
+        power.append(lam[:, -1] * np.einsum("ni,ni->n", drive, motion.qd[link]))
+        order.append(f"I({link})")
+    terms = np.abs(np.array(power)) if power else np.zeros((1, n))
+    scale = terms.max(axis=0)
+    total_power = np.abs(np.sum(np.array(power), axis=0)) if power else np.zeros(n)
+    residual = np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
+    return ForceSweep(
+        motion.inputs, tuple(reactions), moments, balancing_force, residual, tuple(order)
+    )
 
 
 def solve_forces(
     plan: SolvePlan,
     inputs: tuple[float, ...] | None = None,
-    state: KinematicState | None = None,
     minimum_norm: bool = False,
 ) -> ForceSolution:
     """Reactions and balancing moment at one input (default: the sketch pose).
@@ -138,92 +273,20 @@ def solve_forces(
         The mechanism has redundant constraints; with ``minimum_norm`` the
         minimum-norm reactions are returned instead.
     """
-    if state is None:
-        state = solve_pose(plan, inputs)
-    redundant = [s.redundant_link for s in plan.steps if s.group is None]
-    if redundant and not minimum_norm:
-        raise IndeterminateError(
-            f"the mechanism is over-constrained (redundant link(s) {', '.join(redundant)}): its "
-            "reactions are statically indeterminate; ask for the minimum-norm solution"
-        )
-    m = plan.mechanism
-    applied = _applied(plan, state)
-    # generalized force on each link from the pairs already solved (later groups)
-    carried: dict[str, np.ndarray] = {}
-    reactions: list[Reaction] = []
-    order: list[str] = []
-    for step in reversed(plan.steps):
-        links = step.links
-        index = {link: i for i, link in enumerate(links)}
-        rows = sum(eq.size for eq in step.equations)
-        jt = np.zeros((3 * len(links), rows))
-        parts = []
-        r = 0
-        for eq in step.equations:
-            ja, jb = _parts(eq, state)
-            parts.append((eq, ja, jb, r))
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link in index:
-                    jt[3 * index[link] : 3 * index[link] + 3, r : r + eq.size] += part.T
-            r += eq.size
-        rhs = np.concatenate(
-            [-(applied.get(x, np.zeros(3)) + carried.get(x, np.zeros(3))) for x in links]
-        )
-        if jt.shape[0] == jt.shape[1]:
-            lam = np.linalg.solve(jt, rhs)
-        else:
-            lam = np.linalg.lstsq(jt, rhs, rcond=None)[0]
-        for eq, ja, jb, r0 in parts:
-            value = lam[r0 : r0 + eq.size]
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link not in index:
-                    carried[link] = carried.get(link, np.zeros(3)) + part.T @ value
-        reactions.extend(_reactions(parts, lam, m))
-        order.append(step.label)
-    balancing: dict[str, float] = {}
-    balance = [x for x in m.loads if x.kind == "balance"]
-    balancing_force = None
-    power = []
-    for d in plan.drivers:
-        link = d.link
-        st = state.links[link]
-        total = applied.get(link, np.zeros(3)) + carried.get(link, np.zeros(3))
-        ground_eqs = ground_equations(plan, link)
-        cols = []
-        ground_parts = []
-        r0 = 0
-        for eq in ground_eqs:
-            ja, jb = _parts(eq, state)
-            cols.append(ja.T)
-            ground_parts.append((eq, ja, jb, r0))
-            r0 += eq.size
-        load = next((x for x in balance if x.link == link), None)
-        if load is not None:
-            t = math.radians(load.values[0])
-            u = np.array([math.cos(t), math.sin(t)])
-            c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
-            cs, sn = math.cos(st.q[2]), math.sin(st.q[2])
-            rp = np.array([cs * c[0] - sn * c[1], sn * c[0] + cs * c[1]])
-            drive = np.array([[u[0]], [u[1]], [rp[0] * u[1] - rp[1] * u[0]]])
-        elif d.kind == "R":
-            drive = np.array([[0.0], [0.0], [1.0]])
-        else:
-            drive = np.array([[d.direction[0]], [d.direction[1]], [0.0]])
-        jt = np.hstack([*cols, drive])
-        lam = np.linalg.solve(jt, -total)
-        reactions.extend(_reactions(ground_parts, lam[:-1], m))
-        if load is not None:
-            balancing_force = lam[-1] * u
-        else:
-            balancing[link] = float(lam[-1])
-        power.append(float(lam[-1] * (drive[:, 0] @ st.qd)))
-        order.append(f"I({link})")
-    for link, value in applied.items():
-        if link in state.links:
-            power.append(float(value @ state.links[link].qd))
-    scale = max((abs(p) for p in power), default=0.0)
-    residual = abs(sum(power)) / scale if scale > 0 else 0.0
-    return ForceSolution(tuple(reactions), balancing, balancing_force, residual, tuple(order))
+    inputs = tuple(0.0 for _ in plan.drivers) if inputs is None else tuple(inputs)
+    motion = solve_poses(plan, np.array([inputs], dtype=float).reshape(1, -1))
+    sweep = forces_over(plan, motion, minimum_norm)
+    reactions = tuple(
+        Reaction(point, links, kind, force[0], float(couple[0]))
+        for point, links, kind, force, couple in sweep.reactions
+    )
+    return ForceSolution(
+        reactions,
+        {k: float(v[0]) for k, v in sweep.balancing_moment.items()},
+        None if sweep.balancing_force is None else sweep.balancing_force[0],
+        float(sweep.power_residual[0]),
+        sweep.order,
+    )
 
 
 def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
@@ -246,27 +309,6 @@ def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
             c = np.array(m.coordinates(h.point), dtype=float)
             return [Equation("HINGE", link, m.ground, c)]
     raise MechanismError(f"driver {link} has no pair with the ground to take its reactions")
-
-
-def _reactions(parts, lam: np.ndarray, m) -> list[Reaction]:
-    """Reactions from the multipliers: what eq.a exerts on eq.b is ∂Φ/∂q_bᵀ·λ.
-
-    A prismatic pair's ANGLE row (a couple) is reported with its SLIDE row.
-    """
-    out: list[Reaction] = []
-    couple = 0.0
-    for eq, _, jb, r0 in parts:
-        value = lam[r0 : r0 + eq.size]
-        on_b = jb.T @ value
-        point = m.pair(eq.pair).point if eq.pair else _hinge_at(m, eq.point)
-        if eq.kind == "HINGE":
-            out.append(Reaction(point, (eq.a, eq.b), "R", on_b[:2].copy()))
-        elif eq.kind == "ANGLE":
-            couple = float(on_b[2])
-        else:
-            out.append(Reaction(point, (eq.a, eq.b), "P", on_b[:2].copy(), couple))
-            couple = 0.0
-    return out
 
 
 def _hinge_at(m, xy) -> str | None:

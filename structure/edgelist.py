@@ -163,36 +163,53 @@ _LOAD_USAGE = {
 }
 
 
+def _written(exact: list[str | None]) -> tuple[str | None, ...]:
+    return tuple(exact) if any(exact) else ()
+
+
 def _load(tokens: list[str], line_no: int) -> tuple[Load | None, str]:
     kind = tokens[0]
     usage = f"expected '{_LOAD_USAGE[kind]}'"
+    exact: list[str | None] = []
+
+    def value(token: str) -> float:
+        try:
+            number = _number(token)
+        except ValueError:
+            number, _ = read_number(token)
+            exact.append(token)
+            return number
+        exact.append(None)
+        return number
+
     try:
         if kind == "gravity":
             if len(tokens) != 3:
                 return None, usage
-            return Load(kind, "", None, (_number(tokens[1]), _number(tokens[2])), line_no), ""
+            values = (value(tokens[1]), value(tokens[2]))
+            return Load(kind, "", None, values, line_no, _written(exact)), ""
         if kind == "moment":
             if len(tokens) != 3:
                 return None, usage
-            return Load(kind, tokens[1], None, (_number(tokens[2]),), line_no), ""
+            return Load(kind, tokens[1], None, (value(tokens[2]),), line_no, _written(exact)), ""
         if kind == "force":
             if len(tokens) != 5:
                 return None, usage
-            values = (_number(tokens[3]), _number(tokens[4]))
-            return Load(kind, tokens[1], tokens[2], values, line_no), ""
+            values = (value(tokens[3]), value(tokens[4]))
+            return Load(kind, tokens[1], tokens[2], values, line_no, _written(exact)), ""
         if kind == "mass":
             if len(tokens) != 5:
                 return None, usage
-            m, inertia = _number(tokens[2]), _number(tokens[3])
+            m, inertia = value(tokens[2]), value(tokens[3])
             if m < 0 or inertia < 0:
                 return None, "mass and moment of inertia cannot be negative"
-            return Load(kind, tokens[1], tokens[4], (m, inertia), line_no), ""
-        key, eq, value = tokens[3].partition("=") if len(tokens) == 4 else ("", "", "")
+            return Load(kind, tokens[1], tokens[4], (m, inertia), line_no, _written(exact)), ""
+        key, eq, text = tokens[3].partition("=") if len(tokens) == 4 else ("", "", "")
         if key != "angle" or not eq:
             return None, usage
-        return Load(kind, tokens[1], tokens[2], (_number(value),), line_no), ""
+        return Load(kind, tokens[1], tokens[2], (value(text),), line_no, _written(exact)), ""
     except ValueError:
-        return None, f"{usage}: numbers must be finite"
+        return None, f"{usage}: numbers must be finite (or exact expressions like 500*sqrt(2))"
 
 
 def _driver(tokens: list[str], line_no: int) -> tuple[Driver | None, str]:

@@ -244,9 +244,24 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
         values = item.get("values", [])
         link = item.get("link", "")
         point = item.get("point")
+        numbers: list[float] = []
+        written: list[str | None] = []
+        for v in values if isinstance(values, list) else [None]:
+            if _is_number(v):
+                numbers.append(float(v))
+                written.append(None)
+                continue
+            try:
+                number, _ = read_number(v) if isinstance(v, str) else (None, None)
+            except ValueError:
+                number = None
+            if number is None:
+                break
+            numbers.append(number)
+            written.append(v)
         if (
             not isinstance(values, list)
-            or not all(map(_is_number, values))
+            or len(numbers) != len(values)
             or (kind != "gravity" and not _is_name(link))
             or (point_role and not _is_name(point))
         ):
@@ -257,7 +272,9 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
                 kind,
                 _text(link) if kind != "gravity" else "",
                 _text(point) if point_role else None,
-                tuple(float(v) for v in values),
+                tuple(numbers),
+                0,
+                tuple(written) if any(written) else (),
             )
         )
     if problems:
@@ -297,7 +314,15 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
     out["pairs"] = pairs
     if mechanism.loads:
         out["loads"] = [
-            {"kind": x.kind, "link": x.link, "point": x.point, "values": list(x.values)}
+            {
+                "kind": x.kind,
+                "link": x.link,
+                "point": x.point,
+                "values": [
+                    (x.exact[k] if k < len(x.exact) and x.exact[k] else v)
+                    for k, v in enumerate(x.values)
+                ],
+            }
             for x in mechanism.loads
         ]
     if mechanism.points:

@@ -213,21 +213,25 @@ class Load:
     point: str | None
     values: tuple[float, ...]
     line_no: int = field(default=0, compare=False)
+    exact: tuple[str | None, ...] = ()
+
+    def text(self, k: int) -> str:
+        """The ``k``-th number as written (an exact expression) or as its shortest decimal."""
+        written = self.exact[k] if k < len(self.exact) else None
+        return written or number_text(self.values[k])
 
     @property
     def statement(self) -> str:
         """The canonical load line."""
+        numbers = [self.text(k) for k in range(len(self.values))]
         if self.kind == "gravity":
-            return "gravity " + " ".join(number_text(v) for v in self.values)
+            return "gravity " + " ".join(numbers)
         head = [self.kind, self.link] + ([self.point] if self.point else [])
         if self.kind == "balance":
-            return " ".join([*head, f"angle={number_text(self.values[0])}"])
+            return " ".join([*head, f"angle={numbers[0]}"])
         if self.kind == "mass":
-            m, inertia = self.values
-            return " ".join(
-                [self.kind, self.link, number_text(m), number_text(inertia), self.point or ""]
-            ).strip()
-        return " ".join([*head, *(number_text(v) for v in self.values)])
+            return " ".join([self.kind, self.link, *numbers, self.point or ""]).strip()
+        return " ".join([*head, *numbers])
 
 
 @dataclass(frozen=True, slots=True)

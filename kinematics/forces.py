@@ -65,6 +65,7 @@ class Reaction:
     kind: str  # 'R' or 'P'
     force: np.ndarray
     couple: float = 0.0
+    contacts: tuple[np.ndarray, np.ndarray] | None = None
 
     @property
     def magnitude(self) -> float:
@@ -251,6 +252,7 @@ def forces_over(plan: SolvePlan, motion: Motion, minimum_norm: bool = False) -> 
             moments[link] = lam[:, -1].copy()
         power.append(lam[:, -1] * np.einsum("ni,ni->n", drive, motion.qd[link]))
         order.append(f"I({link})")
+    reactions.extend(_contact_forces(plan, reactions))
     terms = np.abs(np.array(power)) if power else np.zeros((1, n))
     scale = terms.max(axis=0)
     total_power = np.abs(np.sum(np.array(power), axis=0)) if power else np.zeros(n)
@@ -277,7 +279,14 @@ def solve_forces(
     motion = solve_poses(plan, np.array([inputs], dtype=float).reshape(1, -1))
     sweep = forces_over(plan, motion, minimum_norm)
     reactions = tuple(
-        Reaction(point, links, kind, force[0], float(couple[0]))
+        Reaction(
+            point,
+            links,
+            kind,
+            force[0],
+            float(couple[0]),
+            _two_contacts(plan, point, links, kind, force[0], float(couple[0])),
+        )
         for point, links, kind, force, couple in sweep.reactions
     )
     return ForceSolution(
@@ -309,6 +318,61 @@ def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
             c = np.array(m.coordinates(h.point), dtype=float)
             return [Equation("HINGE", link, m.ground, c)]
     raise MechanismError(f"driver {link} has no pair with the ground to take its reactions")
+
+
+def _two_contacts(
+    plan: SolvePlan,
+    point: str | None,
+    links: tuple[str, str],
+    kind: str,
+    force: np.ndarray,
+    couple: float,
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """A slide with two contact points ``span`` apart: the two normal forces.
+
+    With N the normal force and C its moment about the pair's point, the
+    contacts at ∓span/2 along the slide carry (N ∓ C/(span/2))/2 each.
+    """
+    if kind != "P":
+        return None
+    pair = next(
+        (
+            p
+            for p in plan.mechanism.pairs
+            if p.kind.value == "P" and set(p.links) == set(links) and p.point == point
+        ),
+        None,
+    )
+    if pair is None or pair.span is None:
+        return None
+    t = pair.angle or 0.0  # the slide direction at the sketch (the forces are at the sketch)
+    u = np.array([math.cos(t), math.sin(t)])
+    norm = float(np.hypot(*force))
+    half = pair.span / 2
+    if norm <= 1e-9 * (1.0 + abs(couple) / half):  # a pure couple: no direction of its own
+        norm, direction = 0.0, np.array([-u[1], u[0]])
+    else:
+        direction = force / norm
+    side = float(u[0] * direction[1] - u[1] * direction[0])  # ±1: u × direction
+    # N1 + N2 = |N|; the contacts at −half and +half along u give the moment C
+    n1 = (norm - couple / (half * side)) / 2
+    n2 = (norm + couple / (half * side)) / 2
+    return n1 * direction, n2 * direction
+
+
+def _contact_forces(plan: SolvePlan, reactions: list) -> list:
+    """Each higher pair's contact force, carried by its virtual link (a two-force member).
+
+    What link ``a`` exerts on the virtual link passes on unchanged to link ``b``.
+    """
+    out = []
+    for virtual, a, b, point in plan.contacts:
+        for _, links, _, force, _ in reactions:
+            if set(links) == {a, virtual}:
+                on_virtual = force if links == (a, virtual) else -force
+                out.append((point, (a, b), "H", on_virtual.copy(), np.zeros(force.shape[0])))
+                break
+    return out
 
 
 def _hinge_at(m, xy) -> str | None:

@@ -94,6 +94,7 @@ class SolvePlan:
     length: float
     flip: frozenset[str] = frozenset()
     higher_pairs: tuple[str, ...] = ()
+    contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
 
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
@@ -228,4 +229,13 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
         span if span > 0 else 1.0,
         frozenset(flip),
         tuple(r.pair.label for r in report.replacements),
+        tuple(
+            (
+                r.virtual_link,
+                r.new_pairs[0].other(r.virtual_link),
+                r.new_pairs[1].other(r.virtual_link),
+                r.pair.point,
+            )
+            for r in report.replacements
+        ),
     )

@@ -61,6 +61,9 @@ def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
                 "force": r.force.tolist(),
                 "magnitude": r.magnitude,
                 **({"couple": r.couple} if r.kind == "P" else {}),
+                **(
+                    {"contacts": [c.tolist() for c in r.contacts]} if r.contacts is not None else {}
+                ),
             }
             for r in result.reactions
         ],

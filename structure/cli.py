@@ -217,6 +217,9 @@ def _forces(args: argparse.Namespace) -> int:
             f"  {r.point or '?'} ({r.links[0]} on {r.links[1]}, {r.kind}): "
             f"F = {_vector(r.force)} N, |F| = {r.magnitude:.6g} N at {angle:.4g}°{couple}"
         )
+        if r.contacts is not None:
+            n1, n2 = r.contacts
+            out.append(f"      two contacts: N1 = {_vector(n1)} N, N2 = {_vector(n2)} N")
     out.append("")
     for link, value in result.balancing_moment.items():
         out.append(f"Balancing moment on driver {link}: {value:.6g} N·m (counter-clockwise +)")

@@ -38,7 +38,7 @@ from .model import (
 
 __all__ = ["mechanism_from_dict", "mechanism_from_json", "mechanism_to_dict", "mechanism_to_json"]
 
-_PAIR_FIELDS = ("links", "kind", "point", "angle", "flat", "roller", "centers", "normal")
+_PAIR_FIELDS = ("links", "kind", "point", "angle", "flat", "roller", "centers", "normal", "span")
 
 
 def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
@@ -133,7 +133,7 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
                 continue
             tokens.append(_text(item["point"]))
         shape_ok = True
-        for key in ("angle", "normal"):
+        for key in ("angle", "normal", "span"):
             if item.get(key) is not None:
                 if not _is_number(item[key]):
                     bad(where, f"'{key}' must be a finite number of degrees")
@@ -305,6 +305,7 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
             ("flat", p.flat),
             ("roller", p.roller),
             ("normal", p.normal_deg),
+            ("span", p.span),
         ):
             if value is not None:
                 item[key] = value

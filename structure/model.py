@@ -89,6 +89,9 @@ class Pair:
     angle_deg : float or None
         P only: direction of the slide line, degrees counter-clockwise, as
         written in the file (``angle`` gives it in radians).
+    span : float or None
+        P only: distance between the slide's two contact points, centred on
+        ``point`` (the kinetostatics then splits the reaction between them).
     flat : str or None
         H only: the link whose profile is a straight line at the contact.
     roller : str or None
@@ -113,6 +116,7 @@ class Pair:
     centers: tuple[str | None, str | None] | None = None
     normal_deg: float | None = None
     line_no: int = field(default=0, compare=False)
+    span: float | None = None
 
     @property
     def angle(self) -> float | None:
@@ -153,6 +157,8 @@ class Pair:
             tokens.append("centers=" + ",".join(c or "" for c in self.centers))
         if self.normal_deg is not None:
             tokens.append(f"normal={number_text(self.normal_deg)}")
+        if self.span is not None:
+            tokens.append(f"span={number_text(self.span)}")
         return " ".join(tokens)
 
     def center_of(self, link: str) -> str | None:
@@ -435,7 +441,7 @@ class Mechanism:
 
 _PAIR_KEYS = {
     PairKind.R: (),
-    PairKind.P: ("angle",),
+    PairKind.P: ("angle", "span"),
     PairKind.H: ("flat", "roller", "centers", "normal"),
 }
 
@@ -489,6 +495,13 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
             fields["normal_deg"] = _angle(opts["normal"])
     except ValueError:
         return None, "angle and normal must be finite numbers of degrees"
+    if "span" in opts:
+        try:
+            fields["span"] = float(opts["span"])
+        except ValueError:
+            return None, "span= is the distance between the slide's two contact points (metres)"
+        if not math.isfinite(fields["span"]) or fields["span"] <= 0:
+            return None, "span= must be a positive distance (metres)"
     if "flat" in opts:
         fields["flat"] = opts["flat"]
     if "roller" in opts:

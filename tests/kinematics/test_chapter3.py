@@ -73,3 +73,22 @@ def test_reactions(case):
 def test_exact_balancing_moment(stem, value):
     (moment,) = forces_exact(plan_of(stem)).balancing_moment.values()
     assert sympy.simplify(moment - value) == 0
+
+
+def test_sine_mechanism_two_point_slot_contact():
+    # problem 3.6: the yoke's guide carries only the couple −50√2 N·m; its two contacts 0.2 m
+    # apart share it as N1 = N2 = 250√2 N in opposite senses
+    result = solve_forces(plan_of("ch3_3_6_sine_mechanism"))
+    (guide,) = [r for r in result.reactions if r.contacts is not None]
+    n1, n2 = guide.contacts
+    assert np.hypot(*n1) == pytest.approx(250 * np.sqrt(2))
+    assert np.hypot(*n2) == pytest.approx(250 * np.sqrt(2))
+    np.testing.assert_allclose(n1 + n2, guide.force, atol=1e-9)
+    assert float(n1 @ n2) < 0
+
+
+def test_cam_contact_force_is_reported_on_the_higher_pair():
+    result = solve_forces(plan_of("ch3_3_9_cam_flat"))
+    (contact,) = [r for r in result.reactions if r.kind == "H"]
+    force = contact.force if contact.links == ("1", "2") else -contact.force
+    np.testing.assert_allclose(force, [-1000.0, 1000.0], atol=1e-9)

@@ -81,6 +81,7 @@ class ForceSolution:
     balancing_force: np.ndarray | None
     power_residual: float
     order: tuple[str, ...]
+    friction_loss: float | None = None
 
 
 @dataclass(frozen=True)
@@ -93,6 +94,7 @@ class ForceSweep:
     balancing_force: np.ndarray | None
     power_residual: np.ndarray
     order: tuple[str, ...]
+    friction_loss: np.ndarray | None = None
 
 
 def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
@@ -168,11 +170,100 @@ def _reactions(parts, lam: np.ndarray, m) -> list:
 def forces_over(plan: SolvePlan, motion: Motion, minimum_norm: bool = False) -> ForceSweep:
     """Reactions and balancing moment at every pose of a solved motion, vectorised.
 
+    Pairs with Coulomb friction (``friction=μ`` on a slide, ``circle=ρ`` on a
+    pin) are solved by fixed-point iteration: the friction loads of the last
+    reactions are added to the loads until the reactions stop changing; the
+    power the friction dissipates is reported as ``friction_loss`` (W).
+
     Raises
     ------
     IndeterminateError
         The mechanism has redundant constraints and ``minimum_norm`` is false.
+    MechanismError
+        The friction iteration does not settle (friction too large: self-locking).
     """
+    rough = [p for p in plan.mechanism.pairs if p.friction or p.circle]
+    result = _forces_once(plan, motion, minimum_norm, {})
+    if not rough:
+        return result
+    for _ in range(200):
+        extra, loss = _friction_loads(plan, motion, result, rough)
+        new = _forces_once(plan, motion, minimum_norm, extra)
+        old_b = np.concatenate([*result.balancing_moment.values(), np.zeros(1)])
+        new_b = np.concatenate([*new.balancing_moment.values(), np.zeros(1)])
+        scale = 1.0 + float(np.max(np.abs(new_b)))
+        result = new
+        if float(np.max(np.abs(new_b - old_b))) <= 1e-12 * scale:
+            break
+    else:
+        raise MechanismError(
+            "the friction iteration does not settle: the friction is large enough to lock "
+            "the mechanism (self-locking) at some pose"
+        )
+    _, loss = _friction_loads(plan, motion, result, rough)
+    return ForceSweep(
+        result.inputs,
+        result.reactions,
+        result.balancing_moment,
+        result.balancing_force,
+        result.power_residual,
+        result.order,
+        loss,
+    )
+
+
+def _friction_loads(
+    plan: SolvePlan, motion: Motion, result: ForceSweep, rough: list
+) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """Generalized friction loads per link from the reactions, and the power they dissipate."""
+    m = plan.mechanism
+    n = motion.inputs.shape[0]
+    loads: dict[str, np.ndarray] = {}
+    loss = np.zeros(n)
+
+    def add(link: str, value: np.ndarray) -> None:
+        if link != m.ground:
+            loads[link] = loads.get(link, np.zeros((n, 3))) + value
+
+    for pair in rough:
+        kind = pair.kind.value
+        found = next(
+            (
+                r
+                for r in result.reactions
+                if r[2] == kind and set(r[1]) == set(pair.links) and r[0] == pair.point
+            ),
+            None,
+        )
+        if found is None:
+            continue
+        _, (x, y), _, force, _ = found
+        size = np.hypot(force[:, 0], force[:, 1])
+        wx, wy = motion.qd[x][:, 2], motion.qd[y][:, 2]
+        if kind == "R":
+            spin = np.sign(wy - wx)
+            moment = -(pair.circle or 0.0) * size * spin
+            add(y, np.column_stack([np.zeros(n), np.zeros(n), moment]))
+            add(x, np.column_stack([np.zeros(n), np.zeros(n), -moment]))
+            loss += (pair.circle or 0.0) * size * np.abs(wy - wx)
+            continue
+        c = np.array(m.coordinates(pair.point), dtype=float)  # type: ignore[arg-type]
+        p_world, v_y, _ = motion.point(y, c)
+        _, v_x, _ = motion.point(x, c)
+        u = rotate_many(motion.q[x][:, 2], np.array([math.cos(pair.angle), math.sin(pair.angle)]))
+        slip = np.einsum("ni,ni->n", v_y - v_x, u)
+        f = -(pair.friction or 0.0) * size[:, None] * np.sign(slip)[:, None] * u
+        for link, sign in ((y, 1.0), (x, -1.0)):
+            r = p_world - motion.q[link][:, :2]
+            g = sign * f
+            add(link, np.column_stack([g, r[:, 0] * g[:, 1] - r[:, 1] * g[:, 0]]))
+        loss += (pair.friction or 0.0) * size * np.abs(slip)
+    return loads, loss
+
+
+def _forces_once(
+    plan: SolvePlan, motion: Motion, minimum_norm: bool, extra: Mapping[str, np.ndarray]
+) -> ForceSweep:
     redundant = [s.redundant_link for s in plan.steps if s.group is None]
     if redundant and not minimum_norm:
         raise IndeterminateError(
@@ -182,6 +273,8 @@ def forces_over(plan: SolvePlan, motion: Motion, minimum_norm: bool = False) -> 
     m = plan.mechanism
     n = motion.inputs.shape[0]
     applied = _applied(plan, motion)
+    for link, value in extra.items():
+        applied[link] = applied.get(link, np.zeros((n, 3))) + value
     carried: dict[str, np.ndarray] = {}
     reactions: list = []
     order: list[str] = []
@@ -295,6 +388,7 @@ def solve_forces(
         None if sweep.balancing_force is None else sweep.balancing_force[0],
         float(sweep.power_residual[0]),
         sweep.order,
+        None if sweep.friction_loss is None else float(sweep.friction_loss[0]),
     )
 
 

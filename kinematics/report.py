@@ -71,6 +71,8 @@ def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
     }
     if result.balancing_force is not None:
         out["balancing_force"] = result.balancing_force.tolist()
+    if result.friction_loss is not None:
+        out["friction_loss"] = result.friction_loss
     return out
 
 

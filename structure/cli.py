@@ -225,6 +225,8 @@ def _forces(args: argparse.Namespace) -> int:
         out.append(f"Balancing moment on driver {link}: {value:.6g} N·m (counter-clockwise +)")
     if result.balancing_force is not None:
         out.append(f"Balancing force: {_vector(result.balancing_force)} N")
+    if result.friction_loss is not None:
+        out.append(f"Power lost to friction: {result.friction_loss:.6g} W")
     out.append(f"Virtual-power check: residual {result.power_residual:.2e} of the largest term")
     sys.stdout.write("\n".join(out) + "\n")
     return 0

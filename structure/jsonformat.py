@@ -38,7 +38,19 @@ from .model import (
 
 __all__ = ["mechanism_from_dict", "mechanism_from_json", "mechanism_to_dict", "mechanism_to_json"]
 
-_PAIR_FIELDS = ("links", "kind", "point", "angle", "flat", "roller", "centers", "normal", "span")
+_PAIR_FIELDS = (
+    "links",
+    "kind",
+    "point",
+    "angle",
+    "flat",
+    "roller",
+    "centers",
+    "normal",
+    "span",
+    "friction",
+    "circle",
+)
 
 
 def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
@@ -133,7 +145,7 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
                 continue
             tokens.append(_text(item["point"]))
         shape_ok = True
-        for key in ("angle", "normal", "span"):
+        for key in ("angle", "normal", "span", "friction", "circle"):
             if item.get(key) is not None:
                 if not _is_number(item[key]):
                     bad(where, f"'{key}' must be a finite number of degrees")
@@ -306,6 +318,8 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
             ("roller", p.roller),
             ("normal", p.normal_deg),
             ("span", p.span),
+            ("friction", p.friction),
+            ("circle", p.circle),
         ):
             if value is not None:
                 item[key] = value

@@ -92,6 +92,10 @@ class Pair:
     span : float or None
         P only: distance between the slide's two contact points, centred on
         ``point`` (the kinetostatics then splits the reaction between them).
+    friction : float or None
+        P only: Coulomb friction coefficient of the slide.
+    circle : float or None
+        R only: friction-circle radius of the pin (metres).
     flat : str or None
         H only: the link whose profile is a straight line at the contact.
     roller : str or None
@@ -117,6 +121,8 @@ class Pair:
     normal_deg: float | None = None
     line_no: int = field(default=0, compare=False)
     span: float | None = None
+    friction: float | None = None
+    circle: float | None = None
 
     @property
     def angle(self) -> float | None:
@@ -159,6 +165,10 @@ class Pair:
             tokens.append(f"normal={number_text(self.normal_deg)}")
         if self.span is not None:
             tokens.append(f"span={number_text(self.span)}")
+        if self.friction is not None:
+            tokens.append(f"friction={number_text(self.friction)}")
+        if self.circle is not None:
+            tokens.append(f"circle={number_text(self.circle)}")
         return " ".join(tokens)
 
     def center_of(self, link: str) -> str | None:
@@ -440,8 +450,8 @@ class Mechanism:
 
 
 _PAIR_KEYS = {
-    PairKind.R: (),
-    PairKind.P: ("angle", "span"),
+    PairKind.R: ("circle",),
+    PairKind.P: ("angle", "span", "friction"),
     PairKind.H: ("flat", "roller", "centers", "normal"),
 }
 
@@ -495,13 +505,20 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
             fields["normal_deg"] = _angle(opts["normal"])
     except ValueError:
         return None, "angle and normal must be finite numbers of degrees"
-    if "span" in opts:
+    for key, meaning in (
+        ("span", "the distance between the slide's two contact points (metres), > 0"),
+        ("friction", "the Coulomb friction coefficient of the slide, >= 0"),
+        ("circle", "the friction-circle radius of the pin (metres), >= 0"),
+    ):
+        if key not in opts:
+            continue
         try:
-            fields["span"] = float(opts["span"])
+            fields[key] = float(opts[key])
         except ValueError:
-            return None, "span= is the distance between the slide's two contact points (metres)"
-        if not math.isfinite(fields["span"]) or fields["span"] <= 0:
-            return None, "span= must be a positive distance (metres)"
+            return None, f"{key}= is {meaning}"
+        value = fields[key]
+        if not math.isfinite(value) or value < 0 or (key == "span" and value == 0):
+            return None, f"{key}= is {meaning}"
     if "flat" in opts:
         fields["flat"] = opts["flat"]
     if "roller" in opts:

@@ -92,3 +92,10 @@ def test_cam_contact_force_is_reported_on_the_higher_pair():
     (contact,) = [r for r in result.reactions if r.kind == "H"]
     force = contact.force if contact.links == ("1", "2") else -contact.force
     np.testing.assert_allclose(force, [-1000.0, 1000.0], atol=1e-9)
+
+
+def test_slider_power_of_problem_3_1():
+    result = solve_forces(plan_of("ch3_3_1_slider_power"))
+    (force,) = result.balancing_moment.values()
+    assert force == pytest.approx(20.0)
+    assert force * 5.0 == pytest.approx(TABLE["ch3_3_1_slider_power"]["power"])

@@ -21,10 +21,11 @@ import csv
 import io
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from .forces import forces_over
 from .plan import SolvePlan
 from .solve import solve_poses
 
@@ -38,6 +39,7 @@ class Sweep:
     ``inputs`` has shape (poses, drivers); ``links[name]`` holds ``angle``,
     ``omega``, ``epsilon`` (shape (poses,)); ``points[name]`` holds
     ``position``, ``velocity``, ``acceleration`` (shape (poses, 2));
+    ``balancing`` the balancing moment (or force) when the file has loads;
     ``transmission[group]`` the transmission angle of each RRR dyad (at the
     middle pin, in [0, π]) and RRP dyad (rod against the slide's normal, in
     [0, π/2]), rad; 0 or π is a dead centre.
@@ -47,6 +49,7 @@ class Sweep:
     links: Mapping[str, Mapping[str, np.ndarray]]
     points: Mapping[str, Mapping[str, np.ndarray]]
     transmission: Mapping[str, np.ndarray]
+    balancing: Mapping[str, np.ndarray] = field(default_factory=dict)
 
     def as_dict(self) -> dict[str, np.ndarray]:
         """Flat ``{column name: array}``, e.g. ``'3.omega'``, ``'C.velocity.x'``."""
@@ -62,6 +65,8 @@ class Sweep:
                 out[f"{name}.{key}.y"] = arr[:, 1]
         for name, arr in self.transmission.items():
             out[f"transmission {name}"] = arr
+        for name, arr in self.balancing.items():
+            out[f"balancing {name}"] = arr
         return out
 
     def to_csv(self) -> str:
@@ -143,7 +148,14 @@ def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -
         for label, (b, c, d) in _rrr_pins(plan).items()
     }
     transmission.update(_rrp_transmission(plan, motion, points))
-    return Sweep(inputs, links, points, transmission)
+    balancing: dict[str, np.ndarray] = {}
+    if plan.mechanism.loads and not any(s.group is None for s in plan.steps):
+        forces = forces_over(plan, motion)
+        balancing = {f"moment {k}": v for k, v in forces.balancing_moment.items()}
+        if forces.balancing_force is not None:
+            balancing["force x"] = forces.balancing_force[:, 0]
+            balancing["force y"] = forces.balancing_force[:, 1]
+    return Sweep(inputs, links, points, transmission, balancing)
 
 
 def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:

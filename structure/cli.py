@@ -274,6 +274,8 @@ def _sweep(args: argparse.Namespace) -> int:
             f"transmission angle of {label}: {np.degrees(mu.min()):.4g}° … "
             f"{np.degrees(mu.max()):.4g}°"
         )
+    for name, values in result.balancing.items():
+        out.append(f"balancing {name}: {values.min():.6g} … {values.max():.6g}")
     if args.csv:
         with open(args.csv, "w", encoding="utf-8") as handle:
             handle.write(result.to_csv())

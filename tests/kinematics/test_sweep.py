@@ -91,3 +91,22 @@ point C 0.4 0
     (mu,) = result.transmission.values()
     assert mu.min() == pytest.approx(math.pi / 2 - math.asin(1 / 3), abs=1e-9)
     assert mu.max() == pytest.approx(math.pi / 2, abs=1e-12)
+
+
+def test_balancing_moment_over_a_turn_matches_virtual_power():
+    # a crank–slider against a constant 500 N on the slider: at every pose M_b·ω1 = −P·v_C
+    text = """
+driver 1 omega=10
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 P C angle=0
+point A 0 0
+point B 0.1 0
+point C 0.4 0
+force 3 C -500 0
+"""
+    result = sweep(plan_of(text), steps=90)
+    (moment,) = result.balancing.values()
+    v_c = result.points["C"]["velocity"][:, 0]
+    np.testing.assert_allclose(moment * 10.0, 500.0 * v_c, atol=1e-9)

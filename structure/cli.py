@@ -106,15 +106,20 @@ def _classify(args: argparse.Namespace) -> int:
             sys.stderr.write(format_mobility_error(exc))
         return 1
     except MechanismError as exc:
-        if args.json:
-            print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
-        sys.stderr.write(f"error: {exc}\n")
-        return 1
+        return _failed(exc, args.json)
     if args.json:
         print(json.dumps(report_to_dict(report, choices), indent=2, ensure_ascii=False))
     else:
         sys.stdout.write(format_report(report, choices))
     return 0
+
+
+def _failed(exc: MechanismError, as_json: bool) -> int:
+    """Report a mechanism error (JSON on stdout when asked, text on stderr); exit code 1."""
+    if as_json:
+        print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
+    sys.stderr.write(f"error: {exc}\n")
+    return 1
 
 
 def _vector(v: object) -> str:
@@ -130,10 +135,7 @@ def _kinematics(args: argparse.Namespace) -> int:
             return _print_exact(report, plan, args.json)
         state = solve_pose(plan)
     except MechanismError as exc:
-        if args.json:
-            print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
-        sys.stderr.write(f"error: {exc}\n")
-        return 1
+        return _failed(exc, args.json)
     except ValueError as exc:  # a --flip that names no dyad
         sys.stderr.write(f"error: {exc}\n")
         return 2
@@ -198,10 +200,7 @@ def _forces(args: argparse.Namespace) -> int:
             return _print_exact_forces(report, make_plan(report), args.json)
         result = solve_forces(make_plan(report), minimum_norm=args.minimum_norm)
     except MechanismError as exc:
-        if args.json:
-            print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
-        sys.stderr.write(f"error: {exc}\n")
-        return 1
+        return _failed(exc, args.json)
     if args.json:
         print(json.dumps(forces_to_dict(result), indent=2, ensure_ascii=False))
         return 0

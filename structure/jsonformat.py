@@ -86,6 +86,29 @@ def _is_number(value: Any) -> bool:
     )
 
 
+def _numbers(values: list[Any]) -> tuple[list[float], list[str | None]]:
+    """Numbers, or exact expressions as strings (``"0.2*sqrt(3)"``), up to the first bad one.
+
+    Returns the float values and, for each, the text it was written as (None for a number).
+    """
+    numbers: list[float] = []
+    written: list[str | None] = []
+    for v in values:
+        if _is_number(v):
+            numbers.append(float(v))
+            written.append(None)
+            continue
+        try:
+            number, _ = read_number(v) if isinstance(v, str) else (None, None)
+        except ValueError:
+            number = None
+        if number is None:
+            break
+        numbers.append(number)
+        written.append(v)
+    return numbers, written
+
+
 def _text(value: Any) -> str:
     if isinstance(value, float) and value.is_integer():
         return str(int(value))
@@ -222,21 +245,7 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
         if not isinstance(value, list) or len(value) != 2:
             bad(where, "must be [x, y] with finite numbers")
             continue
-        coords: list[float] = []
-        exact: list[str | None] = []
-        for v in value:
-            if _is_number(v):
-                coords.append(float(v))
-                exact.append(None)
-                continue
-            try:
-                number, _ = read_number(v) if isinstance(v, str) else (None, None)
-            except ValueError:
-                number = None
-            if number is None:
-                break
-            coords.append(number)
-            exact.append(v)
+        coords, exact = _numbers(value)
         if len(coords) != 2:
             bad(where, "must be [x, y] with finite numbers or exact expressions like '0.2*sqrt(3)'")
             continue
@@ -256,21 +265,7 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
         values = item.get("values", [])
         link = item.get("link", "")
         point = item.get("point")
-        numbers: list[float] = []
-        written: list[str | None] = []
-        for v in values if isinstance(values, list) else [None]:
-            if _is_number(v):
-                numbers.append(float(v))
-                written.append(None)
-                continue
-            try:
-                number, _ = read_number(v) if isinstance(v, str) else (None, None)
-            except ValueError:
-                number = None
-            if number is None:
-                break
-            numbers.append(number)
-            written.append(v)
+        numbers, written = _numbers(values if isinstance(values, list) else [None])
         if (
             not isinstance(values, list)
             or len(numbers) != len(values)

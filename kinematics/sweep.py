@@ -40,9 +40,10 @@ class Sweep:
     ``omega``, ``epsilon`` (shape (poses,)); ``points[name]`` holds
     ``position``, ``velocity``, ``acceleration`` (shape (poses, 2));
     ``balancing`` the balancing moment (or force) when the file has loads;
-    ``transmission[group]`` the transmission angle of each RRR dyad (at the
-    middle pin, in [0, π]) and RRP dyad (rod against the slide's normal, in
-    [0, π/2]), rad; 0 or π is a dead centre.
+    ``transmission[group]`` the transmission angle of each dyad, rad: RRR at
+    the middle pin, in [0, π]; RRP the rod against the slide's normal, RPR,
+    PRP, RPP as in :func:`_prismatic_transmission`, in [0, π/2]; 0 (or π) is a
+    dead centre.
     """
 
     inputs: np.ndarray
@@ -148,6 +149,7 @@ def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -
         for label, (b, c, d) in _rrr_pins(plan).items()
     }
     transmission.update(_rrp_transmission(plan, motion, points))
+    transmission.update(_prismatic_transmission(plan, motion, points))
     balancing: dict[str, np.ndarray] = {}
     if plan.mechanism.loads and not any(s.group is None for s in plan.steps):
         forces = forces_over(plan, motion)
@@ -156,6 +158,51 @@ def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -
             balancing["force x"] = forces.balancing_force[:, 0]
             balancing["force y"] = forces.balancing_force[:, 1]
     return Sweep(inputs, links, points, transmission, balancing)
+
+
+def _slide_direction(plan: SolvePlan, motion, pair_id: int, link: str) -> np.ndarray | None:
+    """World direction of a prismatic pair's slide, turning with ``link`` (N, 2)."""
+    pair = plan.mechanism.pair(pair_id)
+    if pair.angle is None:
+        return None
+    theta = motion.q[link][:, 2] if link in motion.q else np.zeros(len(motion.inputs))
+    return np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
+
+
+def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
+    """RPR, PRP and RPP dyads, in [0, π/2]; 0 is the dead centre of each.
+
+    RPR (rocking block): 90° less the angle between the slide and the line from the
+    block's pin to the slotted link's pivot. PRP and RPP: the angle between the two
+    slides that meet (both angles are fixed by the guides, so only their crossing
+    transmits the force).
+    """
+    out = {}
+    for step in plan.steps:
+        g = step.group
+        if g is None or g.kind not in ("RPR", "PRP", "RPP"):
+            continue
+        (mid,) = g.internal_pairs
+        ext = list(g.external_pairs)
+        if g.kind == "RPR":
+            u = _slide_direction(plan, motion, mid.pair, mid.links[0])
+            pins = [p.point for p in ext]
+            if u is None or len(pins) != 2 or not all(x in points for x in pins):
+                continue
+            line = points[pins[1]]["position"] - points[pins[0]]["position"]
+            length = np.sqrt(np.einsum("ij,ij->i", line, line))
+            along = np.abs(np.einsum("ij,ij->i", line, u)) / np.where(length > 0, length, 1.0)
+            out[g.label] = np.pi / 2 - np.arccos(np.clip(along, 0.0, 1.0))
+            continue
+        slides = [p for p in (*ext, mid) if p.kind.value == "P"]
+        if len(slides) != 2:
+            continue
+        dirs = [_slide_direction(plan, motion, p.pair, p.links[0]) for p in slides]
+        if any(d is None for d in dirs):
+            continue
+        cross = np.abs(dirs[0][:, 0] * dirs[1][:, 1] - dirs[0][:, 1] * dirs[1][:, 0])
+        out[g.label] = np.arcsin(np.clip(cross, 0.0, 1.0))
+    return out
 
 
 def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:

@@ -110,3 +110,16 @@ force 3 C -500 0
     (moment,) = result.balancing.values()
     v_c = result.points["C"]["velocity"][:, 0]
     np.testing.assert_allclose(moment * 10.0, 500.0 * v_c, atol=1e-9)
+
+
+@pytest.mark.parametrize("name", ["scotch_yoke.edges", "inverted_crank_slider.edges"])
+def test_slot_through_the_motion_transmits_at_right_angles(name):
+    # a Scotch yoke's slot is square to its guide, and an inverted crank–slider's slot passes
+    # through the slotted link's pivot: both transmit at 90° all the way round
+    from structure.edgelist import read_edgelist
+
+    from ..conftest import FIXTURES
+
+    result = sweep(make_plan(analyze(read_edgelist(FIXTURES / name))), steps=72)
+    (mu,) = result.transmission.values()
+    np.testing.assert_allclose(mu, np.pi / 2, atol=1e-9)

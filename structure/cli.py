@@ -16,6 +16,7 @@ import numpy as np
 
 from kinematics.exact import forces_exact, solve_exact
 from kinematics.forces import solve_forces
+from kinematics.gears import balancing_moment, reduced_inertia, speed_ratios
 from kinematics.plan import make_plan
 from kinematics.report import (
     exact_forces_to_dict,
@@ -87,6 +88,11 @@ def _parser() -> argparse.ArgumentParser:
         action="store_true",
         help="for an over-constrained mechanism, give the minimum-norm reactions",
     )
+    ge = sub.add_parser(
+        "gears", help="gear train: meshes, carriers, DOF, exact speed ratios, balancing moment"
+    )
+    ge.add_argument("file", help="edge-list file with 'a b H gear z=za,zb' meshes")
+    ge.add_argument("--json", action="store_true", help="print one JSON object")
     sw = sub.add_parser("sweep", help="the kinematics over a whole turn of the driver(s)")
     sw.add_argument("file", help="edge-list file with point coordinates and driver motion")
     sw.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
@@ -252,6 +258,69 @@ def _print_exact_forces(report, plan, as_json: bool) -> int:
     return 0
 
 
+def _gears(args: argparse.Namespace) -> int:
+    try:
+        mechanism = read_edgelist(args.file)
+        ratios = speed_ratios(mechanism)
+        moment = balancing_moment(mechanism, ratios) if len(ratios.inputs) == 1 else None
+        inertia = (
+            reduced_inertia(mechanism, ratios)
+            if len(ratios.inputs) == 1 and any(x.kind == "mass" for x in mechanism.loads)
+            else None
+        )
+    except MechanismError as exc:
+        return _failed(exc, args.json)
+    if args.json:
+        data = {
+            "dof": ratios.dof,
+            "inputs": list(ratios.inputs),
+            "meshes": [
+                {
+                    "pair": mesh.pair.label,
+                    "carrier": mesh.carrier,
+                    "z": [mesh.za, mesh.zb],
+                    "internal": mesh.internal,
+                }
+                for mesh in ratios.meshes
+            ],
+            "teeth_found": [
+                {"pair": mechanism.pair(pid).label, "side": side, "z": z}
+                for (pid, side), z in ratios.teeth_found.items()
+            ],
+            "speed_ratio": {
+                link: {"exact": str(value), "float": float(value)}
+                for link, value in ratios.ratios.items()
+            },
+        }
+        if moment is not None:
+            data["balancing_moment"] = {"exact": str(moment), "float": float(moment)}
+        if inertia is not None:
+            data["reduced_inertia"] = {"exact": str(inertia), "float": float(inertia)}
+        print(json.dumps(data, indent=2, ensure_ascii=False))
+        return 0
+    out = [f"{mechanism.name or 'gear train'}  ({mechanism.source})", ""]
+    for mesh in ratios.meshes:
+        kind = "internal" if mesh.internal else "external"
+        out.append(
+            f"  mesh {mesh.pair.label}: z = {mesh.za}, {mesh.zb} ({kind}), carrier {mesh.carrier}"
+        )
+    for (pid, side), z in ratios.teeth_found.items():
+        pair = mechanism.pair(pid)
+        out.append(f"  from coaxiality: z of {pair.links[side - 1]} in {pair.label} = {z}")
+    out.append(f"DOF of the train: {ratios.dof}; input(s): {', '.join(ratios.inputs)}")
+    out.append("Speed ratios to the input (ω_link / ω_input):")
+    for link, value in ratios.ratios.items():
+        out.append(f"  {link}: {value} ≈ {float(value):.6g}")
+    if moment is not None:
+        out.append(f"Balancing moment on the input (by power): {moment} ≈ {float(moment):.6g} N·m")
+    if inertia is not None:
+        out.append(
+            f"Moment of inertia reduced to the input: {inertia} ≈ {float(inertia):.6g} kg·m²"
+        )
+    sys.stdout.write("\n".join(out) + "\n")
+    return 0
+
+
 def _sweep(args: argparse.Namespace) -> int:
     if args.steps < 1:
         sys.stderr.write("error: --steps must be at least 1\n")
@@ -298,6 +367,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _sweep(args)
     if args.command == "forces":
         return _forces(args)
+    if args.command == "gears":
+        return _gears(args)
     parser.error(f"unknown command {args.command}")
     return 2
 

@@ -50,6 +50,10 @@ _PAIR_FIELDS = (
     "span",
     "friction",
     "circle",
+    "gear",
+    "z",
+    "internal",
+    "module",
 )
 
 
@@ -193,6 +197,17 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
                 shape_ok = False
             else:
                 tokens.append("centers=" + ",".join("" if v is None else _text(v) for v in c))
+        if item.get("gear"):
+            tokens.append("gear")
+        if item.get("z") is not None:
+            z = item["z"]
+            if not isinstance(z, list) or len(z) != 2:
+                bad(where, "'z' must be [za, zb] (integers or '?')")
+                continue
+            tokens.append("z=" + ",".join(str(t) for t in z))
+        for key in ("internal", "module"):
+            if item.get(key) is not None:
+                tokens.append(f"{key}={_text(item[key])}")
         if not shape_ok:
             continue
         pair, why = pair_from_tokens(tokens, len(pairs) + 1, 0)
@@ -315,11 +330,17 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
             ("span", p.span),
             ("friction", p.friction),
             ("circle", p.circle),
+            ("internal", p.internal),
+            ("module", p.module),
         ):
             if value is not None:
                 item[key] = value
         if p.centers is not None:
             item["centers"] = list(p.centers)
+        if p.gear:
+            item["gear"] = True
+        if p.teeth is not None:
+            item["z"] = ["?" if t is None else t for t in p.teeth]
         pairs.append(item)
     out["pairs"] = pairs
     if mechanism.loads:

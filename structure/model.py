@@ -96,6 +96,10 @@ class Pair:
         P only: Coulomb friction coefficient of the slide.
     circle : float or None
         R only: friction-circle radius of the pin (metres).
+    gear, teeth, internal, module
+        H only: a gear mesh (``gear``), the tooth numbers of ``a`` and ``b``
+        (``z=20,60``; None for an unknown ``?``), the link with internal
+        teeth and the module (metres).
     flat : str or None
         H only: the link whose profile is a straight line at the contact.
     roller : str or None
@@ -123,6 +127,10 @@ class Pair:
     span: float | None = None
     friction: float | None = None
     circle: float | None = None
+    gear: bool = False
+    teeth: tuple[int | None, int | None] | None = None
+    internal: str | None = None
+    module: float | None = None
 
     @property
     def angle(self) -> float | None:
@@ -153,6 +161,14 @@ class Pair:
         tokens = [self.a, self.b, self.kind.value]
         if self.point is not None:
             tokens.append(self.point)
+        if self.gear:
+            tokens.append("gear")
+        if self.teeth is not None:
+            tokens.append("z=" + ",".join("?" if t is None else str(t) for t in self.teeth))
+        if self.internal is not None:
+            tokens.append(f"internal={self.internal}")
+        if self.module is not None:
+            tokens.append(f"module={number_text(self.module)}")
         if self.angle_deg is not None:
             tokens.append(f"angle={number_text(self.angle_deg)}")
         if self.flat is not None:
@@ -452,7 +468,7 @@ class Mechanism:
 _PAIR_KEYS = {
     PairKind.R: ("circle",),
     PairKind.P: ("angle", "span", "friction"),
-    PairKind.H: ("flat", "roller", "centers", "normal"),
+    PairKind.H: ("flat", "roller", "centers", "normal", "z", "internal", "module"),
 }
 
 
@@ -484,6 +500,9 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
         return None, f"pair joins link {a} to itself"
     rest = tokens[3:]
     point = None
+    gear = kind is PairKind.H and "gear" in rest
+    if gear:
+        rest = [t for t in rest if t != "gear"]
     if rest and "=" not in rest[0]:
         point, rest = rest[0], rest[1:]
     opts: dict[str, str] = {}
@@ -531,6 +550,26 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
                 "centers=O1,O2 names the centres of curvature on a and b (one may be empty)",
             )
         fields["centers"] = (parts[0] or None, parts[1] or None)
+    if gear or "z" in opts or "internal" in opts or "module" in opts:
+        if not gear:
+            return None, "z=, internal= and module= belong to a gear mesh: write 'gear'"
+        fields["gear"] = True
+        if "z" in opts:
+            teeth = opts["z"].split(",")
+            if len(teeth) != 2 or not all(t == "?" or (t.isdigit() and int(t) > 0) for t in teeth):
+                return None, "z=za,zb gives the tooth numbers of a and b (positive integers or ?)"
+            fields["teeth"] = tuple(None if t == "?" else int(t) for t in teeth)
+        if "internal" in opts:
+            if opts["internal"] not in (a, b):
+                return None, f"internal={opts['internal']} is not one of the pair's links {a}, {b}"
+            fields["internal"] = opts["internal"]
+        if "module" in opts:
+            try:
+                fields["module"] = float(opts["module"])
+            except ValueError:
+                return None, "module= is the gear module in metres"
+            if not math.isfinite(fields["module"]) or fields["module"] <= 0:
+                return None, "module= is the gear module in metres"
     return Pair(pair_id, kind, a, b, point, line_no=line_no, **fields), ""
 
 

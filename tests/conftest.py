@@ -13,6 +13,7 @@ FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 STRUCTURE_TABLES = ("chapter1.toml", "classics.toml")
 KINEMATICS_TABLE = "kinematics.toml"
 FORCES_TABLE = "forces.toml"
+GEARS_TABLE = "gears.toml"
 
 
 def expected_table(names: tuple[str, ...] = STRUCTURE_TABLES) -> dict[str, dict]:

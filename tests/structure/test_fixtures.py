@@ -12,14 +12,14 @@ import pytest
 from structure.edgelist import read_edgelist
 from structure.report import analyze
 
-from ..conftest import FIXTURES, FORCES_TABLE, KINEMATICS_TABLE, expected_table
+from ..conftest import FIXTURES, FORCES_TABLE, GEARS_TABLE, KINEMATICS_TABLE, expected_table
 
 TABLE = expected_table()
 
 
 def test_every_fixture_has_expected_answers():
     files = {p.stem for p in FIXTURES.glob("*.edges")}
-    kinematic = set(expected_table((KINEMATICS_TABLE, FORCES_TABLE)))
+    kinematic = set(expected_table((KINEMATICS_TABLE, FORCES_TABLE, GEARS_TABLE)))
     assert set(TABLE) <= files
     assert files == set(TABLE) | kinematic, files.symmetric_difference(set(TABLE) | kinematic)
     assert len([f for f in files if f.startswith("ch1_")]) == 17

@@ -1,0 +1,281 @@
+"""Gear trains in the kinematic graph: meshes, carriers, Willis relations, exact speed ratios.
+
+A gear mesh is a higher pair marked ``gear`` with its tooth numbers
+(``2 3 H gear z=25,105 internal=3``). Its carrier is the link that holds both
+gear axes: the link joined by revolute pairs (directly or through a shared
+pin) to both gears; for an ordinary pair on fixed axes that is the ground.
+Each mesh gives one Willis relation in the carrier's frame,
+
+    z_a·(ω_a − ω_c) = ∓ z_b·(ω_b − ω_c)   (− external, + internal teeth),
+
+and the linear system of all meshes is solved exactly (sympy rationals) for
+every link's speed relative to the input(s). The train's DOF is the number of
+link speeds minus the rank of the relations. An unknown tooth number
+(``z=25,?``) is found from coaxiality: every planet's meshes with gears on
+the carrier's axis span the same centre distance.
+
+>>> from structure.edgelist import parse_edgelist
+>>> m = parse_edgelist(["driver 3", "0 c R O", "0 3 R O", "c 2 R P",
+...                     "2 0 H gear z=20,60", "2 3 H gear z=25,? internal=3"])
+>>> r = speed_ratios(m)
+>>> r.teeth_found, r.ratios["c"], r.dof
+({(5, 2): 105}, 7/12, 1)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import sympy
+
+from structure.errors import MechanismError, MobilityError
+from structure.model import Mechanism, Pair, PairKind
+
+__all__ = [
+    "Mesh",
+    "TrainRatios",
+    "balancing_moment",
+    "meshes",
+    "reduced_inertia",
+    "speed_ratios",
+]
+
+
+@dataclass(frozen=True)
+class Mesh:
+    """A gear mesh between links ``a`` and ``b`` with its carrier."""
+
+    pair: Pair
+    a: str
+    b: str
+    za: int | None
+    zb: int | None
+    carrier: str
+    internal: bool
+
+
+@dataclass(frozen=True)
+class TrainRatios:
+    """Every train link's angular velocity relative to the input(s), exact.
+
+    ``ratios[link]`` is ω_link/ω_input (one input) or an expression in the
+    input speeds ``omega_<link>``; ``teeth_found`` maps (pair id, side 1 or 2)
+    to tooth numbers solved from coaxiality.
+    """
+
+    inputs: tuple[str, ...]
+    ratios: Mapping[str, sympy.Expr]
+    dof: int
+    meshes: tuple[Mesh, ...]
+    teeth_found: Mapping[tuple[int, int], int]
+
+
+def _joined(m: Mechanism) -> dict[str, set[str]]:
+    """Links joined by a revolute pair (or a shared pin point) to each link."""
+    out: dict[str, set[str]] = {link: set() for link in m.links}
+    for p in m.pairs:
+        if p.kind is PairKind.R:
+            out[p.a].add(p.b)
+            out[p.b].add(p.a)
+    for h in m.hinges:
+        for x in h.links:
+            out[x].update(y for y in h.links if y != x)
+    return out
+
+
+def meshes(mechanism: Mechanism) -> tuple[Mesh, ...]:
+    """The gear meshes of ``mechanism`` with their carriers.
+
+    Raises
+    ------
+    MechanismError
+        A mesh whose carrier cannot be found (the gears' axes are on no common link)
+        or is ambiguous.
+    """
+    joined = _joined(mechanism)
+    out = []
+    for p in mechanism.pairs:
+        if not p.gear:
+            continue
+        a, b = p.a, p.b
+        # a gear's axis is fixed in the links it is pinned to (and in itself)
+        carriers = (joined[a] | {a}) & (joined[b] | {b})
+        if len(carriers) != 1:
+            raise MechanismError(
+                f"{mechanism.source}: line {p.line_no}: the gear mesh {p.label} has "
+                + (
+                    "no carrier: its gears' axes are on no common link"
+                    if not carriers
+                    else f"several possible carriers ({', '.join(sorted(carriers))})"
+                )
+            )
+        za, zb = p.teeth if p.teeth is not None else (None, None)
+        out.append(Mesh(p, a, b, za, zb, carriers.pop(), p.internal is not None))
+    return tuple(out)
+
+
+def _coaxial_teeth(mechanism: Mechanism, found: list[Mesh]) -> dict[tuple[int, int], int]:
+    """Unknown tooth numbers from equal centre distances of each planet's meshes."""
+    solved: dict[tuple[int, int], int] = {}
+    ground = mechanism.ground
+
+    def is_planet(gear: str, carrier: str) -> bool:
+        # pinned to a moving carrier off the carrier's own axis (a pin without the ground)
+        return carrier != ground and any(
+            gear in h.links and carrier in h.links and ground not in h.links
+            for h in mechanism.hinges
+        )
+
+    by_planet: dict[tuple[str, str], list[Mesh]] = {}
+    for mesh in found:
+        for planet in (mesh.a, mesh.b):
+            if planet != mesh.carrier and is_planet(planet, mesh.carrier):
+                by_planet.setdefault((planet, mesh.carrier), []).append(mesh)
+    for (planet, _), group in by_planet.items():
+        symbols = {}
+        spans = []
+        for mesh in group:
+            z_planet = mesh.za if mesh.a == planet else mesh.zb
+            z_other = mesh.zb if mesh.a == planet else mesh.za
+            zp = sympy.Integer(z_planet) if z_planet is not None else None
+            zo = sympy.Integer(z_other) if z_other is not None else None
+            if zp is None or zo is None:
+                # side 1 is the tooth number of a, side 2 of b
+                missing_a = (zp is None) == (mesh.a == planet)
+                key = (mesh.pair.id, 1 if missing_a else 2)
+                symbols[key] = sympy.Symbol(f"z_{mesh.pair.id}_{key[1]}")
+                if zp is None:
+                    zp = symbols[key]
+                else:
+                    zo = symbols[key]
+            # an internal gear around the planet: distance (z_ring − z_planet)
+            spans.append(zo - zp if mesh.internal else zo + zp)
+        if not symbols:
+            continue
+        if len(symbols) != 1 or len(spans) < 2:
+            raise MechanismError(
+                "coaxiality gives one equation per planet: "
+                f"cannot find {len(symbols)} tooth numbers from it"
+            )
+        ((key, symbol),) = symbols.items()
+        known = [s for s in spans if not s.has(symbol)]
+        unknown = [s for s in spans if s.has(symbol)]
+        value = sympy.solve(sympy.Eq(unknown[0], known[0]), symbol)
+        if len(value) != 1 or not value[0].is_integer or value[0] <= 0:
+            raise MechanismError(f"coaxiality gives no positive whole tooth number ({value})")
+        solved[key] = int(value[0])
+    return solved
+
+
+def speed_ratios(mechanism: Mechanism, inputs: Sequence[str] | None = None) -> TrainRatios:
+    """Exact speed of every train link relative to the input link(s).
+
+    ``inputs`` default to the mechanism's drivers. With one input the ratios
+    are numbers; with several they are expressions in ``omega_<link>``.
+
+    Raises
+    ------
+    MobilityError
+        The train's DOF differs from the number of inputs (e.g. a differential
+        with one input: it asks for a second one).
+    MechanismError
+        A mesh without tooth numbers or carrier.
+    """
+    found = list(meshes(mechanism))
+    if not found:
+        raise MechanismError(f"{mechanism.source}: no gear mesh (write 'a b H gear z=za,zb')")
+    teeth_found = _coaxial_teeth(mechanism, found)
+    inputs = tuple(mechanism.driver_links if inputs is None else inputs)
+    ground = mechanism.ground
+    links = sorted(
+        {x for mesh in found for x in (mesh.a, mesh.b, mesh.carrier)} - {ground},
+        key=mechanism.links.index,
+    )
+    omega = {x: sympy.Symbol(f"w_{x}") for x in links}
+    omega[ground] = sympy.Integer(0)
+    equations = []
+    for mesh in found:
+        za = mesh.za if mesh.za is not None else teeth_found.get((mesh.pair.id, 1))
+        zb = mesh.zb if mesh.zb is not None else teeth_found.get((mesh.pair.id, 2))
+        if za is None or zb is None:
+            raise MechanismError(
+                f"{mechanism.source}: line {mesh.pair.line_no}: the gear mesh {mesh.pair.label} "
+                "needs tooth numbers z=za,zb"
+            )
+        wc = omega[mesh.carrier]
+        sign = 1 if mesh.internal else -1
+        equations.append(za * (omega[mesh.a] - wc) - sign * zb * (omega[mesh.b] - wc))
+    unknowns = [omega[x] for x in links]
+    matrix, _ = sympy.linear_eq_to_matrix(equations, unknowns)
+    dof = len(unknowns) - matrix.rank()
+    if dof != len(inputs):
+        raise MobilityError(
+            f"the gear train has {dof} degree(s) of freedom but {len(inputs)} input(s) "
+            f"({', '.join(inputs) or 'none'}): "
+            + ("give another input (a driver line)" if dof > len(inputs) else "name fewer inputs")
+        )
+    speeds = {x: sympy.Symbol(f"omega_{x}") for x in inputs}
+    system = equations + [omega[x] - speeds[x] for x in inputs]
+    solution = sympy.solve(system, unknowns, dict=True)
+    if len(solution) != 1:
+        raise MobilityError("the inputs do not fix the train's speeds")
+    (values,) = solution
+    ratios = {}
+    for x in links:
+        value = sympy.simplify(values[omega[x]])
+        if len(inputs) == 1:
+            value = sympy.simplify(value / speeds[inputs[0]])
+        ratios[x] = value
+    return TrainRatios(inputs, ratios, dof, tuple(found), teeth_found)
+
+
+def balancing_moment(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr | None:
+    """Moment on the (single) input that balances the ``moment`` loads, by power.
+
+    M_in·ω_in + Σ M_i·ω_i = 0, so M_in = −Σ M_i·(ω_i/ω_in); None without loads.
+
+    >>> from structure.edgelist import parse_edgelist
+    >>> m = parse_edgelist(["driver 1", "0 1 R A", "0 2 R B", "1 2 H gear z=20,40",
+    ...                     "moment 2 -10"])
+    >>> balancing_moment(m, speed_ratios(m))
+    -5
+    """
+    if len(ratios.inputs) != 1:
+        raise MobilityError("the balancing moment by power needs a single input")
+    moments = [x for x in mechanism.loads if x.kind == "moment"]
+    if not moments:
+        return None
+    total = sympy.Integer(0)
+    for load in moments:
+        ratio = 1 if load.link == ratios.inputs[0] else ratios.ratios.get(load.link)
+        if ratio is None:
+            raise MechanismError(f"the moment on link {load.link} is not on a train link")
+        total += sympy.Rational(repr(load.values[0])) * ratio
+    return sympy.simplify(-total)
+
+
+def reduced_inertia(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr:
+    """Moment of inertia of the train reduced to its (single) input link: Σ J_i·(ω_i/ω_in)².
+
+    Uses the ``mass LINK m J S`` statements' moments of inertia (the centres of
+    mass of links turning about fixed axes; a planet's orbiting mass needs the
+    sketch and is not included).
+
+    >>> from structure.edgelist import parse_edgelist
+    >>> m = parse_edgelist(["driver 3", "0 c R O", "0 3 R O", "c 2 R P",
+    ...                     "2 0 H gear z=20,60", "2 3 H gear z=25,105 internal=3",
+    ...                     "mass c 0 0.05 O", "point O 0 0"])
+    >>> reduced_inertia(m, speed_ratios(m))
+    49/2880
+    """
+    if len(ratios.inputs) != 1:
+        raise MobilityError("the reduced inertia needs a single input")
+    total = sympy.Integer(0)
+    for load in mechanism.loads:
+        if load.kind == "mass" and load.link in ratios.ratios:
+            inertia = sympy.Rational(repr(load.values[1]))
+            total += inertia * ratios.ratios[load.link] ** 2
+        elif load.kind == "mass" and load.link == ratios.inputs[0]:
+            total += sympy.Rational(repr(load.values[1]))
+    return sympy.simplify(total)

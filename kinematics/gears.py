@@ -24,9 +24,11 @@ the carrier's axis span the same centre distance.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+import numpy as np
 import sympy
 
 from structure.errors import MechanismError, MobilityError
@@ -34,11 +36,13 @@ from structure.model import Mechanism, Pair, PairKind
 
 __all__ = [
     "Mesh",
+    "TrainForces",
     "TrainRatios",
     "balancing_moment",
     "meshes",
     "reduced_inertia",
     "speed_ratios",
+    "train_forces",
 ]
 
 
@@ -279,3 +283,128 @@ def reduced_inertia(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr:
         elif load.kind == "mass" and load.link == ratios.inputs[0]:
             total += sympy.Rational(repr(load.values[1]))
     return sympy.simplify(total)
+
+
+@dataclass(frozen=True)
+class TrainForces:
+    """Tooth forces and planet pin forces of a planetary train, and the balancing moment.
+
+    ``tooth[pair id]`` is the tangential force (N) that the mesh's link ``b``
+    receives from ``a`` (signed along the common tangent); ``pins[planet]`` the
+    force (N, vector in the carrier's frame: x radial outward, y tangential)
+    the carrier exerts on the planet, radial components from the pressure angle
+    included; ``balancing_moment`` the moment on the input from the planets'
+    force balance (it must equal the one found by power).
+    """
+
+    tooth: Mapping[int, float]
+    pins: Mapping[str, tuple[float, float]]
+    balancing_moment: float
+
+
+def train_forces(
+    mechanism: Mechanism, ratios: TrainRatios, pressure_angle: float = math.radians(20)
+) -> TrainForces:
+    """Force balance of every gear, planet and the carrier, in the textbook's radial layout.
+
+    The main axis is the origin and each planet's axis lies at the carrier arm R
+    on the x axis; a mesh of a central gear of pitch radius r with the planet is
+    at x = r (the sun's side or the ring's side alike), a mesh between two
+    planets is not supported. Each gear's moments about its own axis balance; the
+    carrier takes the planets' pin forces at the arm R. Needs ``module=`` on
+    every mesh.
+
+    >>> from structure.edgelist import parse_edgelist
+    >>> m = parse_edgelist(["driver C", "0 C R O", "0 1 R O", "C 2 R B",
+    ...     "1 2 H gear z=20,20 module=0.02", "2 0 H gear z=20,60 internal=0 module=0.02",
+    ...     "moment 1 20"])
+    >>> f = train_forces(m, speed_ratios(m))
+    >>> round(f.balancing_moment, 9), [round(x, 9) + 0.0 for x in f.pins["2"]]
+    (-80.0, [0.0, -200.0])
+    """
+    if len(ratios.inputs) != 1:
+        raise MobilityError("the force balance needs a single input")
+    ground = mechanism.ground
+    carriers = {mesh.carrier for mesh in ratios.meshes}
+    if len(carriers) != 1 or ground in carriers:
+        raise MechanismError(
+            "the planet force balance covers planetary trains with one moving carrier"
+        )
+    (carrier,) = carriers
+
+    def planet_of(mesh: Mesh) -> str | None:
+        for x in (mesh.a, mesh.b):
+            if x != ground and any(
+                x in h.links and carrier in h.links and ground not in h.links
+                for h in mechanism.hinges
+            ):
+                return x
+        return None
+
+    teeth = {}
+    for mesh in ratios.meshes:
+        za = mesh.za if mesh.za is not None else ratios.teeth_found[(mesh.pair.id, 1)]
+        zb = mesh.zb if mesh.zb is not None else ratios.teeth_found[(mesh.pair.id, 2)]
+        if mesh.pair.module is None:
+            raise MechanismError(f"the gear mesh {mesh.pair.label} needs module= for forces")
+        teeth[mesh.pair.id] = (za, zb, mesh.pair.module)
+    arm: dict[str, float] = {}
+    place: dict[int, float] = {}  # x of each mesh
+    for mesh in ratios.meshes:
+        planet = planet_of(mesh)
+        if planet is None:
+            raise MechanismError(f"the mesh {mesh.pair.label} joins no planet of carrier {carrier}")
+        za, zb, module = teeth[mesh.pair.id]
+        z_planet, z_central = (za, zb) if mesh.a == planet else (zb, za)
+        r_central = module * z_central / 2
+        r_planet = module * z_planet / 2
+        place[mesh.pair.id] = r_central
+        radius = r_central - r_planet if mesh.internal else r_central + r_planet
+        if planet in arm and not math.isclose(arm[planet], radius, rel_tol=1e-9):
+            raise MechanismError(f"the meshes of planet {planet} are not coaxial")
+        arm[planet] = radius
+    unknowns = [mesh.pair.id for mesh in ratios.meshes]
+    moving = sorted(
+        {x for mesh in ratios.meshes for x in (mesh.a, mesh.b)} - {ground} | {carrier},
+        key=mechanism.links.index,
+    )
+    size = len(unknowns) + 1
+    rows: list[list[float]] = []
+    rhs: list[float] = []
+    external = {x.link: x.values[0] for x in mechanism.loads if x.kind == "moment"}
+    for link in moving:
+        row = [0.0] * size
+        for k, mesh in enumerate(ratios.meshes):
+            x = place[mesh.pair.id]
+            if link == carrier:
+                planet = planet_of(mesh)
+                # force on the planet from this mesh, passed to the carrier through the pin
+                sign = 1.0 if mesh.b == planet else -1.0
+                row[k] += arm[planet] * sign
+                continue
+            if link not in (mesh.a, mesh.b):
+                continue
+            sign = 1.0 if link == mesh.b else -1.0
+            lever = x - arm[link] if link in arm else x
+            row[k] += lever * sign
+        if link == ratios.inputs[0]:
+            row[-1] = 1.0
+        rows.append(row)
+        rhs.append(-external.get(link, 0.0))
+    solution, *_ = np.linalg.lstsq(np.array(rows), np.array(rhs), rcond=None)
+    if not np.allclose(np.array(rows) @ solution, rhs, atol=1e-9 * (1 + np.abs(rhs).max())):
+        raise MechanismError("the gear train's force balance has no solution")
+    tooth = {pid: float(solution[k]) for k, pid in enumerate(unknowns)}
+    pins: dict[str, tuple[float, float]] = {}
+    for planet in arm:
+        fx = fy = 0.0
+        for mesh in ratios.meshes:
+            if planet_of(mesh) != planet:
+                continue
+            sign = 1.0 if mesh.b == planet else -1.0
+            f = sign * tooth[mesh.pair.id]
+            fy += f
+            # separating force: away from an external partner, toward a ring's centre
+            fx += abs(f) * math.tan(pressure_angle) * (-1.0 if mesh.internal else 1.0)
+        pins[planet] = (-fx, -fy)
+    return TrainForces(tooth, pins, float(solution[-1]))

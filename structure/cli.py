@@ -16,7 +16,7 @@ import numpy as np
 
 from kinematics.exact import forces_exact, solve_exact
 from kinematics.forces import solve_forces
-from kinematics.gears import balancing_moment, reduced_inertia, speed_ratios
+from kinematics.gears import balancing_moment, reduced_inertia, speed_ratios, train_forces
 from kinematics.plan import make_plan
 from kinematics.report import (
     exact_forces_to_dict,
@@ -268,6 +268,12 @@ def _gears(args: argparse.Namespace) -> int:
             if len(ratios.inputs) == 1 and any(x.kind == "mass" for x in mechanism.loads)
             else None
         )
+        forces = None
+        if moment is not None and all(m.pair.module for m in ratios.meshes):
+            try:
+                forces = train_forces(mechanism, ratios)
+            except MechanismError:
+                forces = None  # not a single-carrier planetary train: power only
     except MechanismError as exc:
         return _failed(exc, args.json)
     if args.json:
@@ -296,6 +302,15 @@ def _gears(args: argparse.Namespace) -> int:
             data["balancing_moment"] = {"exact": str(moment), "float": float(moment)}
         if inertia is not None:
             data["reduced_inertia"] = {"exact": str(inertia), "float": float(inertia)}
+        if forces is not None:
+            data["balancing_moment_by_force_balance"] = forces.balancing_moment
+            data["planet_pin_forces"] = {
+                planet: {"radial": f[0], "tangential": f[1], "magnitude": float(np.hypot(*f))}
+                for planet, f in forces.pins.items()
+            }
+            data["tooth_forces"] = {
+                mechanism.pair(pid).label: value for pid, value in forces.tooth.items()
+            }
         print(json.dumps(data, indent=2, ensure_ascii=False))
         return 0
     out = [f"{mechanism.name or 'gear train'}  ({mechanism.source})", ""]
@@ -313,6 +328,15 @@ def _gears(args: argparse.Namespace) -> int:
         out.append(f"  {link}: {value} ≈ {float(value):.6g}")
     if moment is not None:
         out.append(f"Balancing moment on the input (by power): {moment} ≈ {float(moment):.6g} N·m")
+    if forces is not None:
+        out.append(
+            f"Balancing moment from the planets' force balance: {forces.balancing_moment:.6g} N·m"
+        )
+        for planet, (fr, ft) in forces.pins.items():
+            out.append(
+                f"  pin of planet {planet}: radial {fr:.6g} N, tangential {ft:.6g} N "
+                f"(|F| = {float(np.hypot(fr, ft)):.6g} N, pressure angle 20° included)"
+            )
     if inertia is not None:
         out.append(
             f"Moment of inertia reduced to the input: {inertia} ≈ {float(inertia):.6g} kg·m²"

@@ -11,7 +11,13 @@ import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from kinematics.gears import balancing_moment, meshes, reduced_inertia, speed_ratios
+from kinematics.gears import (
+    balancing_moment,
+    meshes,
+    reduced_inertia,
+    speed_ratios,
+    train_forces,
+)
 from kinematics.plan import make_plan
 from kinematics.solve import solve_pose
 from structure.edgelist import parse_edgelist, read_edgelist
@@ -115,3 +121,21 @@ def test_willis_ratios_agree_with_the_velocity_solver(teeth):
     state = solve_pose(make_plan(analyze(m)))
     for link, value in ratios.ratios.items():
         assert state.links[link].omega == pytest.approx(float(value), rel=1e-7, abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("stem", "tangential"),
+    [
+        # 3.11: the sun's 100 N at r1 = 0.2 m and the ring's equal force give 200 N at the pin
+        ("ch3_3_11_planetary", 200.0),
+        # 3.12: the carrier's 56 N·m at the arm r_C = 5·(28 + 84)/2 mm = 0.28 m: 200 N
+        ("ch3_3_12_planetary", 200.0),
+    ],
+)
+def test_planet_force_balance_agrees_with_power(stem, tangential):
+    m = read_edgelist(FIXTURES / TABLE[stem]["file"])
+    ratios = speed_ratios(m)
+    forces = train_forces(m, ratios)
+    assert forces.balancing_moment == pytest.approx(float(balancing_moment(m, ratios)))
+    ((_, pin_tangential),) = forces.pins.values()
+    assert abs(pin_tangential) == pytest.approx(tangential)

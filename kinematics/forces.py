@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -82,6 +82,7 @@ class ForceSolution:
     power_residual: float
     order: tuple[str, ...]
     friction_loss: float | None = None
+    pin_forces: Mapping[str, Mapping[str, np.ndarray]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -389,7 +390,28 @@ def solve_forces(
         float(sweep.power_residual[0]),
         sweep.order,
         None if sweep.friction_loss is None else float(sweep.friction_loss[0]),
+        _pin_forces(plan.mechanism, reactions),
     )
+
+
+def _pin_forces(m, reactions) -> dict[str, dict[str, np.ndarray]]:
+    """At each compound hinge, the force its pin exerts on every link that meets there.
+
+    With the pin massless these forces add up to zero; they are what a compound hinge
+    determines (forces "between" two of its links are not: any split of the pin's
+    load among them balances). Found from the tree of pairs the groups used.
+    """
+    out: dict[str, dict[str, np.ndarray]] = {}
+    for point, hinge in m.compound_hinges.items():
+        forces = {link: np.zeros(2) for link in hinge.links}
+        for r in reactions:
+            if r.point != point or r.kind != "R":
+                continue
+            a, b = r.links
+            forces[b] = forces[b] + r.force
+            forces[a] = forces[a] - r.force
+        out[point] = forces
+    return out
 
 
 def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:

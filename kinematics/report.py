@@ -73,6 +73,11 @@ def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
         out["balancing_force"] = result.balancing_force.tolist()
     if result.friction_loss is not None:
         out["friction_loss"] = result.friction_loss
+    if result.pin_forces:
+        out["compound_pins"] = {
+            point: {link: f.tolist() for link, f in forces.items()}
+            for point, forces in result.pin_forces.items()
+        }
     return out
 
 

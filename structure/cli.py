@@ -225,6 +225,9 @@ def _forces(args: argparse.Namespace) -> int:
         if r.contacts is not None:
             n1, n2 = r.contacts
             out.append(f"      two contacts: N1 = {_vector(n1)} N, N2 = {_vector(n2)} N")
+    for point, forces in result.pin_forces.items():
+        parts = ", ".join(f"on {link} {_vector(f)}" for link, f in forces.items())
+        out.append(f"  compound pin {point}: the pin pushes {parts} N")
     out.append("")
     for link, value in result.balancing_moment.items():
         out.append(f"Balancing moment on driver {link}: {value:.6g} N·m (counter-clockwise +)")

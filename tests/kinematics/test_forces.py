@@ -182,3 +182,34 @@ force 3 C -500 0
     gain = (rough.balancing_moment["1"] - smooth.balancing_moment["1"]) * 10.0
     assert rough.friction_loss > 0
     assert gain == pytest.approx(rough.friction_loss, rel=1e-9)
+
+
+def test_compound_pin_forces_balance_and_carry_the_load():
+    # three links on one pin B: crank 1 drives two dyads through it (links 2 and 4);
+    # the pin is massless, so the forces it exerts on 1, 2 and 4 add up to zero
+    text = """
+driver 1 omega=1
+0 1 R A
+1 2 R B
+1 4 R B
+2 3 R C
+3 0 R D
+4 5 R E
+5 0 R F
+point A 0 0
+point B 0.1 0.1
+point C 0.3 0.25
+point D 0.4 0
+point E 0.05 0.35
+point F -0.2 0.1
+force 3 C 100 0
+force 5 E 0 -100
+"""
+    result = forces_of(text)
+    forces = result.pin_forces["B"]
+    assert set(forces) == {"1", "2", "4"}
+    np.testing.assert_allclose(sum(forces.values()), [0.0, 0.0], atol=1e-9)
+    # the pin pushes on the crank with the sum of what the two couplers push on the pin
+    on_1 = forces["1"]
+    assert np.hypot(*on_1) > 0
+    assert result.power_residual < 1e-9

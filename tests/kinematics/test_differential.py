@@ -160,8 +160,13 @@ def test_mirror_symmetry():
 def test_bias_ratio_closed_form():
     m, r_s, r_p, m_p, m_sc, n = 900.0, 0.07, 0.028, 3.0, 20.0, 4
     s = bevel_differential_split(
-        m, side_radius=r_s, planet_radius=r_p, planet_friction=m_p,
-        side_friction=m_sc, faster="right", n_planets=n,
+        m,
+        side_radius=r_s,
+        planet_radius=r_p,
+        planet_friction=m_p,
+        side_friction=m_sc,
+        faster="right",
+        n_planets=n,
     )
     loss = n * m_p * r_s / (2 * r_p) + m_sc  # torque moved from fast to slow side
     assert s.torque_right == pytest.approx(m / 2 - loss)
@@ -176,14 +181,24 @@ friction = st.floats(0.0, 50.0)
 
 @settings(max_examples=200, deadline=None)
 @given(
-    m=finite, r_s=radius, r_p=radius, m_p=friction, m_sc=friction,
-    n=st.integers(1, 6), faster=st.sampled_from(["left", "right"]),
-    mc_l=st.floats(0, 300), mc_r=st.floats(0, 300),
+    m=finite,
+    r_s=radius,
+    r_p=radius,
+    m_p=friction,
+    m_sc=friction,
+    n=st.integers(1, 6),
+    faster=st.sampled_from(["left", "right"]),
+    mc_l=st.floats(0, 300),
+    mc_r=st.floats(0, 300),
 )
 def test_sum_of_half_shaft_torques(m, r_s, r_p, m_p, m_sc, n, faster, mc_l, mc_r):
     common = {
-        "side_radius": r_s, "planet_radius": r_p, "planet_friction": m_p,
-        "side_friction": m_sc, "faster": faster, "n_planets": n,
+        "side_radius": r_s,
+        "planet_radius": r_p,
+        "planet_friction": m_p,
+        "side_friction": m_sc,
+        "faster": faster,
+        "n_planets": n,
         "resistance_torques": (mc_l, mc_r),
     }
     rel = bevel_differential_split(m, side_friction_model="relative", **common)
@@ -192,15 +207,11 @@ def test_sum_of_half_shaft_torques(m, r_s, r_p, m_p, m_sc, n, faster, mc_l, mc_r
     # friction internal (planet friction acts about axes perpendicular to the axle)
     assert rel.torque_left + rel.torque_right == pytest.approx(m - mc_l - mc_r, abs=tol)
     # the paper's eq. (24) loses 2·M_sc on top
-    assert pap.torque_left + pap.torque_right == pytest.approx(
-        m - 2 * m_sc - mc_l - mc_r, abs=tol
-    )
+    assert pap.torque_left + pap.torque_right == pytest.approx(m - 2 * m_sc - mc_l - mc_r, abs=tol)
     mc_fast, mc_slow = (mc_l, mc_r) if faster == "left" else (mc_r, mc_l)
     shaft_fast, shaft_slow = rel.torque_fast + mc_fast, rel.torque_slow + mc_slow
     assert shaft_slow >= shaft_fast - tol  # friction moves torque to the slower side
-    assert shaft_slow - shaft_fast == pytest.approx(
-        n * m_p * r_s / r_p + 2 * m_sc, abs=tol
-    )
+    assert shaft_slow - shaft_fast == pytest.approx(n * m_p * r_s / r_p + 2 * m_sc, abs=tol)
 
 
 def _power_terms(s: DifferentialSplit, m, r_s, r_p, w_case, w_fast, resist):
@@ -214,15 +225,26 @@ def _power_terms(s: DifferentialSplit, m, r_s, r_p, w_case, w_fast, resist):
 
 @settings(max_examples=200, deadline=None)
 @given(
-    m=st.floats(0, 5000), r_s=radius, r_p=radius, m_p=friction, m_sc=friction,
-    n=st.integers(1, 6), faster=st.sampled_from(["left", "right"]),
-    w_case=st.floats(0.1, 100), dw=st.floats(0.0, 50), mc=st.floats(0, 300),
+    m=st.floats(0, 5000),
+    r_s=radius,
+    r_p=radius,
+    m_p=friction,
+    m_sc=friction,
+    n=st.integers(1, 6),
+    faster=st.sampled_from(["left", "right"]),
+    w_case=st.floats(0.1, 100),
+    dw=st.floats(0.0, 50),
+    mc=st.floats(0, 300),
 )
 def test_power_balance(m, r_s, r_p, m_p, m_sc, n, faster, w_case, dw, mc):
     w_fast = w_case + dw
     common = {
-        "side_radius": r_s, "planet_radius": r_p, "planet_friction": m_p,
-        "side_friction": m_sc, "faster": faster, "n_planets": n,
+        "side_radius": r_s,
+        "planet_radius": r_p,
+        "planet_friction": m_p,
+        "side_friction": m_sc,
+        "faster": faster,
+        "n_planets": n,
         "resistance_torques": (mc, 0.5 * mc),
     }
     tol = 1e-9 * (abs(m) + 1e4) * (w_case + dw + 1)
@@ -260,8 +282,12 @@ def test_result_is_frozen():
 
 def test_zero_fast_torque_gives_infinite_bias():
     s = bevel_differential_split(
-        1.0, side_radius=0.1, planet_radius=0.05, planet_friction=0.5,
-        side_friction=0.0, faster="left",
+        1.0,
+        side_radius=0.1,
+        planet_radius=0.05,
+        planet_friction=0.5,
+        side_friction=0.0,
+        faster="left",
     )
     assert s.torque_left == pytest.approx(0.0)
     assert s.bias_ratio == math.inf

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import sympy
@@ -37,12 +37,14 @@ from structure.model import Mechanism, Pair, PairKind
 __all__ = [
     "Mesh",
     "TrainForces",
+    "TrainLosses",
     "TrainRatios",
     "balancing_moment",
     "meshes",
     "reduced_inertia",
     "speed_ratios",
     "train_forces",
+    "train_losses",
 ]
 
 
@@ -300,6 +302,7 @@ class TrainForces:
     tooth: Mapping[int, float]
     pins: Mapping[str, tuple[float, float]]
     balancing_moment: float
+    levers: Mapping[int, tuple[float, float]] = field(default_factory=dict)
 
 
 def train_forces(
@@ -407,4 +410,58 @@ def train_forces(
             # separating force: away from an external partner, toward a ring's centre
             fx += abs(f) * math.tan(pressure_angle) * (-1.0 if mesh.internal else 1.0)
         pins[planet] = (-fx, -fy)
-    return TrainForces(tooth, pins, float(solution[-1]))
+    levers = {
+        mesh.pair.id: tuple(
+            place[mesh.pair.id] - arm[x] if x in arm else place[mesh.pair.id]
+            for x in (mesh.a, mesh.b)
+        )
+        for mesh in ratios.meshes
+    }
+    return TrainForces(tooth, pins, float(solution[-1]), levers)  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class TrainLosses:
+    """Balancing moment with mesh losses, the power lost and the train's efficiency."""
+
+    balancing_moment: float
+    lost_power: float  # W per rad/s of the input
+    efficiency: float
+
+
+def train_losses(mechanism: Mechanism, ratios: TrainRatios, mesh_efficiency: float) -> TrainLosses:
+    """Mesh losses of a planetary train, to first order in 1 − η.
+
+    Each mesh loses (1 − η) of the power it transmits in the carrier's frame,
+    |T_a·(ω_a − ω_c)|, T_a the moment its teeth put on gear a (from the
+    lossless force balance); the input must supply it too:
+    M_b·ω_in = −Σ M_i·ω_i + Σ losses. The efficiency is the useful power over
+    the input power.
+
+    >>> from structure.edgelist import parse_edgelist
+    >>> m = parse_edgelist(["driver C", "0 C R O", "0 1 R O", "C 2 R B",
+    ...     "1 2 H gear z=20,20 module=0.02", "2 0 H gear z=20,60 internal=0 module=0.02",
+    ...     "moment 1 20"])
+    >>> r = train_losses(m, speed_ratios(m), 0.98)   # each mesh carries 20 N·m at 3 rad/s
+    >>> round(r.lost_power, 9), round(r.balancing_moment, 9), round(r.efficiency, 9)
+    (2.4, -77.6, 0.97)
+    """
+    if not 0 < mesh_efficiency <= 1:
+        raise ValueError("the mesh efficiency is a number in (0, 1]")
+    forces = train_forces(mechanism, ratios)
+    omega = {**{k: float(v) for k, v in ratios.ratios.items()}, mechanism.ground: 0.0}
+    omega[ratios.inputs[0]] = 1.0
+    lost = 0.0
+    for mesh in ratios.meshes:
+        lever_a, _ = forces.levers[mesh.pair.id]
+        torque_a = -lever_a * forces.tooth[mesh.pair.id]
+        relative = omega[mesh.a] - omega[mesh.carrier]
+        lost += (1 - mesh_efficiency) * abs(torque_a * relative)
+    external = {x.link: x.values[0] for x in mechanism.loads if x.kind == "moment"}
+    useful = -sum(value * omega.get(link, 0.0) for link, value in external.items())
+    balancing = useful + lost  # M_b·ω_in with ω_in = 1: the input also pays the losses
+    # the input drives: the loads take useful of what it gives; the loads drive and the input
+    # brakes: it receives what the losses leave
+    driving = useful >= 0
+    efficiency = (useful / balancing if balancing else 1.0) if driving else balancing / useful
+    return TrainLosses(balancing, lost, efficiency)

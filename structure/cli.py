@@ -16,7 +16,13 @@ import numpy as np
 
 from kinematics.exact import forces_exact, solve_exact
 from kinematics.forces import solve_forces
-from kinematics.gears import balancing_moment, reduced_inertia, speed_ratios, train_forces
+from kinematics.gears import (
+    balancing_moment,
+    reduced_inertia,
+    speed_ratios,
+    train_forces,
+    train_losses,
+)
 from kinematics.plan import make_plan
 from kinematics.report import (
     exact_forces_to_dict,
@@ -93,6 +99,12 @@ def _parser() -> argparse.ArgumentParser:
     )
     ge.add_argument("file", help="edge-list file with 'a b H gear z=za,zb' meshes")
     ge.add_argument("--json", action="store_true", help="print one JSON object")
+    ge.add_argument(
+        "--efficiency",
+        type=float,
+        metavar="ETA",
+        help="efficiency of each mesh (e.g. 0.98): losses, balancing moment with them",
+    )
     sw = sub.add_parser("sweep", help="the kinematics over a whole turn of the driver(s)")
     sw.add_argument("file", help="edge-list file with point coordinates and driver motion")
     sw.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
@@ -277,6 +289,14 @@ def _gears(args: argparse.Namespace) -> int:
                 forces = train_forces(mechanism, ratios)
             except MechanismError:
                 forces = None  # not a single-carrier planetary train: power only
+        losses = None
+        if args.efficiency is not None:
+            if forces is None:
+                raise MechanismError(
+                    "mesh losses need a planetary train with module= on every mesh and a "
+                    "moment load"
+                )
+            losses = train_losses(mechanism, ratios, args.efficiency)
     except MechanismError as exc:
         return _failed(exc, args.json)
     if args.json:
@@ -305,6 +325,13 @@ def _gears(args: argparse.Namespace) -> int:
             data["balancing_moment"] = {"exact": str(moment), "float": float(moment)}
         if inertia is not None:
             data["reduced_inertia"] = {"exact": str(inertia), "float": float(inertia)}
+        if losses is not None:
+            data["with_losses"] = {
+                "mesh_efficiency": args.efficiency,
+                "balancing_moment": losses.balancing_moment,
+                "lost_power_per_input_speed": losses.lost_power,
+                "efficiency": losses.efficiency,
+            }
         if forces is not None:
             data["balancing_moment_by_force_balance"] = forces.balancing_moment
             data["planet_pin_forces"] = {
@@ -331,6 +358,12 @@ def _gears(args: argparse.Namespace) -> int:
         out.append(f"  {link}: {value} ≈ {float(value):.6g}")
     if moment is not None:
         out.append(f"Balancing moment on the input (by power): {moment} ≈ {float(moment):.6g} N·m")
+    if losses is not None:
+        out.append(
+            f"With mesh efficiency {args.efficiency:g}: balancing moment "
+            f"{losses.balancing_moment:.6g} N·m, loss {losses.lost_power:.6g} W per rad/s of "
+            f"the input, train efficiency {losses.efficiency:.4g}"
+        )
     if forces is not None:
         out.append(
             f"Balancing moment from the planets' force balance: {forces.balancing_moment:.6g} N·m"

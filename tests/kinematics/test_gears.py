@@ -17,6 +17,7 @@ from kinematics.gears import (
     reduced_inertia,
     speed_ratios,
     train_forces,
+    train_losses,
 )
 from kinematics.plan import make_plan
 from kinematics.solve import solve_pose
@@ -139,3 +140,15 @@ def test_planet_force_balance_agrees_with_power(stem, tangential):
     assert forces.balancing_moment == pytest.approx(float(balancing_moment(m, ratios)))
     ((_, pin_tangential),) = forces.pins.values()
     assert abs(pin_tangential) == pytest.approx(tangential)
+
+
+def test_mesh_losses_of_problem_3_11():
+    # ω_C = 1, ω1 = 4, ω2 = −2: each mesh carries 20 N·m at a relative speed of 3 rad/s
+    # (sun: 4 − 1, planet: −2 − 1), so with η = 0.98 each loses 0.02·60 = 1.2 W per rad/s;
+    # the sun drives (M1·ω1 = 80), the carrier receives 80 − 2.4 = 77.6: efficiency 0.97
+    m = read_edgelist(FIXTURES / "ch3_3_11_planetary.edges")
+    losses = train_losses(m, speed_ratios(m), 0.98)
+    assert losses.lost_power == pytest.approx(2.4)
+    assert losses.balancing_moment == pytest.approx(-77.6)
+    assert losses.efficiency == pytest.approx(0.97)
+    assert train_losses(m, speed_ratios(m), 1.0).balancing_moment == pytest.approx(-80.0)

@@ -264,9 +264,10 @@ def balancing_moment(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr | 
 def reduced_inertia(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr:
     """Moment of inertia of the train reduced to its (single) input link: Σ J_i·(ω_i/ω_in)².
 
-    Uses the ``mass LINK m J S`` statements' moments of inertia (the centres of
-    mass of links turning about fixed axes; a planet's orbiting mass needs the
-    sketch and is not included).
+    Uses the ``mass LINK m J S`` statements: J·(ω/ω_in)² for every link, and
+    for a planet (centre of mass on its axis) also its orbiting mass,
+    m·(ω_c·R/ω_in)² with R the carrier arm from the tooth numbers and the
+    module (``module=`` is then needed on its meshes).
 
     >>> from structure.edgelist import parse_edgelist
     >>> m = parse_edgelist(["driver 3", "0 c R O", "0 3 R O", "c 2 R P",
@@ -278,13 +279,48 @@ def reduced_inertia(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr:
     if len(ratios.inputs) != 1:
         raise MobilityError("the reduced inertia needs a single input")
     total = sympy.Integer(0)
+    arms = _planet_arms(mechanism, ratios)
     for load in mechanism.loads:
-        if load.kind == "mass" and load.link in ratios.ratios:
-            inertia = sympy.Rational(repr(load.values[1]))
-            total += inertia * ratios.ratios[load.link] ** 2
-        elif load.kind == "mass" and load.link == ratios.inputs[0]:
-            total += sympy.Rational(repr(load.values[1]))
+        if load.kind != "mass" or load.link not in ratios.ratios:
+            continue
+        mass, inertia = (sympy.Rational(repr(v)) for v in load.values)
+        total += inertia * ratios.ratios[load.link] ** 2
+        if mass and load.link in arms:
+            carrier, arm = arms[load.link]
+            if arm is None:
+                raise MechanismError(
+                    f"the orbiting mass of planet {load.link} needs module= on its meshes"
+                )
+            total += mass * (ratios.ratios[carrier] * arm) ** 2
     return sympy.simplify(total)
+
+
+def _planet_arms(
+    mechanism: Mechanism, ratios: TrainRatios
+) -> dict[str, tuple[str, sympy.Expr | None]]:
+    """Each planet's carrier and carrier arm (exact, or None without a module)."""
+    ground = mechanism.ground
+    out: dict[str, tuple[str, sympy.Expr | None]] = {}
+    for mesh in ratios.meshes:
+        carrier = mesh.carrier
+        if carrier == ground:
+            continue
+        for planet in (mesh.a, mesh.b):
+            if planet == ground or not any(
+                planet in h.links and carrier in h.links and ground not in h.links
+                for h in mechanism.hinges
+            ):
+                continue
+            za = mesh.za if mesh.za is not None else ratios.teeth_found.get((mesh.pair.id, 1))
+            zb = mesh.zb if mesh.zb is not None else ratios.teeth_found.get((mesh.pair.id, 2))
+            z_p, z_c = (za, zb) if mesh.a == planet else (zb, za)
+            if mesh.pair.module is None or z_p is None or z_c is None:
+                out.setdefault(planet, (carrier, None))
+                continue
+            module = sympy.Rational(repr(mesh.pair.module))
+            span = (z_c - z_p) if mesh.internal else (z_c + z_p)
+            out[planet] = (carrier, module * span / 2)
+    return out
 
 
 @dataclass(frozen=True)

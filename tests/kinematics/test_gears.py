@@ -152,3 +152,11 @@ def test_mesh_losses_of_problem_3_11():
     assert losses.balancing_moment == pytest.approx(-77.6)
     assert losses.efficiency == pytest.approx(0.97)
     assert train_losses(m, speed_ratios(m), 1.0).balancing_moment == pytest.approx(-80.0)
+
+
+def test_reduced_inertia_counts_the_orbiting_planet():
+    # 3.11 with a 2 kg planet (J = 0.001) and the carrier input: the planet turns at ω2 = −2·ωC
+    # and its centre orbits at R = 0.02·(20 + 20)/2 = 0.4 m: J_red = 0.001·4 + 2·0.4² = 0.324
+    text = (FIXTURES / "ch3_3_11_planetary.edges").read_text() + "\nmass 2 2 0.001 B\n"
+    m = parse_edgelist(text.splitlines())
+    assert reduced_inertia(m, speed_ratios(m)) == sympy.Rational(324, 1000)

@@ -77,6 +77,11 @@ def _parser() -> argparse.ArgumentParser:
         "--exact", action="store_true", help="exact values (radicals, fractions) with sympy"
     )
     kin.add_argument(
+        "--plot",
+        metavar="OUT",
+        help="draw the mechanism and its velocity and acceleration polygons (.png, .svg, .pdf)",
+    )
+    kin.add_argument(
         "--flip",
         action="append",
         metavar="GROUP",
@@ -132,6 +137,18 @@ def _classify(args: argparse.Namespace) -> int:
     return 0
 
 
+def _plot(report, plan, state, path: str) -> None:
+    """Save the kinematics sheet; matplotlib is the optional ``plot`` extra, imported here."""
+    try:
+        from kinematics.figures import kinematics_sheet, save
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise MechanismError("--plot needs matplotlib: pip install 'assur[plot]'") from exc
+    try:
+        save(kinematics_sheet(report, plan, state), path)
+    except ValueError as exc:
+        raise MechanismError(str(exc)) from exc
+
+
 def _failed(exc: MechanismError, as_json: bool) -> int:
     """Report a mechanism error (JSON on stdout when asked, text on stderr); exit code 1."""
     if as_json:
@@ -152,6 +169,8 @@ def _kinematics(args: argparse.Namespace) -> int:
         if args.exact:
             return _print_exact(report, plan, args.json)
         state = solve_pose(plan)
+        if args.plot:
+            _plot(report, plan, state, args.plot)
     except MechanismError as exc:
         return _failed(exc, args.json)
     except ValueError as exc:  # a --flip that names no dyad

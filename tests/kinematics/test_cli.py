@@ -43,3 +43,11 @@ def test_kinematics_needs_coordinates(capsys):
     assert main(["kinematics", str(FIXTURES / "ch1_1_2a_mechanical_press.edges")]) == 1
     err = capsys.readouterr().err
     assert "coordinates" in err and "Traceback" not in err
+
+
+def test_kinematics_plot_writes_the_sheet(tmp_path, capsys):
+    pytest_plot = tmp_path / "sheet.png"
+    assert main(["kinematics", str(FIXTURES / "fourbar.edges"), "--plot", str(pytest_plot)]) == 0
+    assert pytest_plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert main(["kinematics", str(FIXTURES / "fourbar.edges"), "--plot", "x.gif"]) == 1
+    assert "Traceback" not in capsys.readouterr().err

@@ -28,7 +28,7 @@ characterization of the Assur graphs from engineering", EJC 31 (2010).
 from __future__ import annotations
 
 import heapq
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 import networkx as nx
@@ -36,7 +36,7 @@ import networkx as nx
 from .constraints import MissingGeometry, RowKind, constraint_system, sketch_realization
 from .dulmage_mendelsohn import irreducible_blocks
 from .errors import DecompositionError, MobilityError
-from .model import Mechanism, PairKind, validated
+from .model import Hinge, Mechanism, PairKind, validated
 from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
 
 __all__ = [
@@ -396,11 +396,12 @@ def _groups_from_blocks(
     )
     index = {b: i for i, b in enumerate(order)}
     level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
+    compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
     for b, links in members.items():
         for link in links:
             level[link] = index[b]
     groups = tuple(
-        _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b]))
+        _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b], compound))
         for b in order
     )
     group_dag = nx.DiGraph()
@@ -462,15 +463,20 @@ def _build_group(links: list[str], found: _GroupPairs) -> AssurGroup:
 
 
 def _group_pairs(
-    mechanism: Mechanism, links: list[str], done: dict[str, int], level: int
-) -> tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]:
+    mechanism: Mechanism,
+    links: list[str],
+    done: dict[str, int],
+    level: int,
+    compound: Mapping[str, Hinge] | None = None,
+) -> _GroupPairs:
     """Pairs of a group known at ``level``: internal joints, external letters, middle letter."""
     members = set(links)
     pairs: list[GroupPair] = []
     joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
     external_letter: dict[str, str] = {}
     middle_letter = ""
-    compound = mechanism.compound_hinges
+    if compound is None:
+        compound = mechanism.compound_hinges
     seen_hinges: set[str] = set()
     seen_pairs: set[int] = set()
     for link in links:

@@ -169,7 +169,7 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
     def body(link: str) -> tuple[int, ...]:
         return () if link == ground else (pos[link], ang[link])
 
-    compound = mechanism.compound_hinges
+    compound = dict(mechanism.compound_hinges)  # a plain dict: looked up once per pair
     done_points: set[str] = set()
     for p in mechanism.pairs:
         if p.kind is _R:
@@ -349,6 +349,8 @@ def sketch_problems(mechanism: Mechanism) -> list[EdgeListProblem]:
     Empty when no pair's point has coordinates (a purely structural
     description) or when the sketch is complete.
     """
+    if not mechanism.points:
+        return []
     located = any(
         p.point is not None and mechanism.coordinates(p.point) is not None for p in mechanism.pairs
     )

@@ -599,6 +599,24 @@ def _hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:
     return tuple(out)
 
 
+def _pieces(nodes: Iterable[str], edges: Iterable[tuple[str, str]]) -> list[set[str]]:
+    """Connected pieces of a small graph (union-find)."""
+    parent = {x: x for x in nodes}
+
+    def find(x: str) -> str:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    for a, b in edges:
+        parent[find(a)] = find(b)
+    pieces: dict[str, set[str]] = {}
+    for x in parent:
+        pieces.setdefault(find(x), set()).add(x)
+    return list(pieces.values())
+
+
 def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
     """Check a mechanism's topology; raise one EdgeListError listing every problem.
 
@@ -633,23 +651,21 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
     for h in m.hinges:
         if len(h.pairs) < 2:
             continue
-        ug = nx.MultiGraph()
-        ug.add_nodes_from(h.links)
-        ug.add_edges_from(m.pair(i).links for i in h.pairs)
+        parts = _pieces(h.links, [m.pair(i).links for i in h.pairs])
         first = m.pair(h.pairs[0])
-        if not nx.is_connected(ug):
-            parts = " | ".join(",".join(sorted(c)) for c in nx.connected_components(ug))
+        if len(parts) > 1:
+            text = " | ".join(",".join(sorted(c)) for c in parts)
             bad(
                 first.line_no,
-                f"the pairs at point {h.point} do not connect its links ({parts})",
+                f"the pairs at point {h.point} do not connect its links ({text})",
                 first.statement,
             )
-        elif ug.number_of_edges() != len(h.links) - 1:
+        elif len(h.pairs) != len(h.links) - 1:
             cyc = m.pair(h.pairs[-1])
             bad(
                 cyc.line_no,
                 f"the pairs at point {h.point} close a cycle: a hinge of {len(h.links)} "
-                f"links has {len(h.links) - 1} pairs, {ug.number_of_edges()} are listed",
+                f"links has {len(h.links) - 1} pairs, {len(h.pairs)} are listed",
                 cyc.statement,
             )
     if not m._by_link.get(m.ground):

@@ -124,14 +124,14 @@ def _classify(args: argparse.Namespace) -> int:
         choices = all_driver_choices(report) if args.all_drivers else ()
     except MobilityError as exc:
         if args.json:
-            print(json.dumps(mobility_error_dict(exc), indent=2, ensure_ascii=False))
+            _print_json(mobility_error_dict(exc))
         else:
             sys.stderr.write(format_mobility_error(exc))
         return 1
     except MechanismError as exc:
         return _failed(exc, args.json)
     if args.json:
-        print(json.dumps(report_to_dict(report, choices), indent=2, ensure_ascii=False))
+        _print_json(report_to_dict(report, choices))
     else:
         sys.stdout.write(format_report(report, choices))
     return 0
@@ -149,10 +149,19 @@ def _plot(report, plan, state, path: str) -> None:
         raise MechanismError(str(exc)) from exc
 
 
+def _print_json(data: object) -> None:
+    print(json.dumps(data, indent=2, ensure_ascii=False))
+
+
+def _title(mechanism, suffix: str = "") -> list[str]:
+    """The first lines of a text answer: the mechanism's name and file."""
+    return [f"{mechanism.name or 'mechanism'}  ({mechanism.source}){suffix}", ""]
+
+
 def _failed(exc: MechanismError, as_json: bool) -> int:
     """Report a mechanism error (JSON on stdout when asked, text on stderr); exit code 1."""
     if as_json:
-        print(json.dumps({"error": str(exc)}, indent=2, ensure_ascii=False))
+        _print_json({"error": str(exc)})
     sys.stderr.write(f"error: {exc}\n")
     return 1
 
@@ -177,10 +186,10 @@ def _kinematics(args: argparse.Namespace) -> int:
         sys.stderr.write(f"error: {exc}\n")
         return 2
     if args.json:
-        print(json.dumps(state_to_dict(state), indent=2, ensure_ascii=False))
+        _print_json(state_to_dict(state))
         return 0
     m = report.mechanism
-    out = [f"{m.name or 'mechanism'}  ({m.source})", ""]
+    out = _title(m)
     for d in plan.drivers:
         unit = ("ω", "rad/s", "ε", "rad/s²") if d.kind == "R" else ("v", "m/s", "a", "m/s²")
         assumed = "" if d.speed_given else " (not given in the file: assumed 0)"
@@ -216,10 +225,10 @@ def _kinematics(args: argparse.Namespace) -> int:
 def _print_exact(report, plan, as_json: bool) -> int:
     state = solve_exact(plan)
     if as_json:
-        print(json.dumps(exact_to_dict(state), indent=2, ensure_ascii=False))
+        _print_json(exact_to_dict(state))
         return 0
     m = report.mechanism
-    out = [f"{m.name or 'mechanism'}  ({m.source}), exact values at the sketch pose", ""]
+    out = _title(m, ", exact values at the sketch pose")
     for name, values in state.links.items():
         out.append(f"  {name}: ω = {values['omega']} rad/s, ε = {values['epsilon']} rad/s²")
     out.append("")
@@ -239,10 +248,10 @@ def _forces(args: argparse.Namespace) -> int:
     except MechanismError as exc:
         return _failed(exc, args.json)
     if args.json:
-        print(json.dumps(forces_to_dict(result), indent=2, ensure_ascii=False))
+        _print_json(forces_to_dict(result))
         return 0
     m = report.mechanism
-    out = [f"{m.name or 'mechanism'}  ({m.source})", ""]
+    out = _title(m)
     out.append("Solved in this order (farthest group first): " + " → ".join(result.order))
     out.append("")
     out.append("Reactions (the force the first link exerts on the second):")
@@ -274,10 +283,10 @@ def _forces(args: argparse.Namespace) -> int:
 def _print_exact_forces(report, plan, as_json: bool) -> int:
     result = forces_exact(plan)
     if as_json:
-        print(json.dumps(exact_forces_to_dict(result), indent=2, ensure_ascii=False))
+        _print_json(exact_forces_to_dict(result))
         return 0
     m = report.mechanism
-    out = [f"{m.name or 'mechanism'}  ({m.source}), exact values at the sketch pose", ""]
+    out = _title(m, ", exact values at the sketch pose")
     for point, links, kind, force, couple in result.reactions:
         extra = f", couple {couple} N·m" if kind == "P" else ""
         out.append(
@@ -360,7 +369,7 @@ def _gears(args: argparse.Namespace) -> int:
             data["tooth_forces"] = {
                 mechanism.pair(pid).label: value for pid, value in forces.tooth.items()
             }
-        print(json.dumps(data, indent=2, ensure_ascii=False))
+        _print_json(data)
         return 0
     out = [f"{mechanism.name or 'gear train'}  ({mechanism.source})", ""]
     for mesh in ratios.meshes:

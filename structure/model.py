@@ -177,14 +177,14 @@ class Pair:
             tokens.append(f"roller={self.roller}")
         if self.centers is not None:
             tokens.append("centers=" + ",".join(c or "" for c in self.centers))
-        if self.normal_deg is not None:
-            tokens.append(f"normal={number_text(self.normal_deg)}")
-        if self.span is not None:
-            tokens.append(f"span={number_text(self.span)}")
-        if self.friction is not None:
-            tokens.append(f"friction={number_text(self.friction)}")
-        if self.circle is not None:
-            tokens.append(f"circle={number_text(self.circle)}")
+        for key, value in (
+            ("normal", self.normal_deg),
+            ("span", self.span),
+            ("friction", self.friction),
+            ("circle", self.circle),
+        ):
+            if value is not None:
+                tokens.append(f"{key}={number_text(value)}")
         return " ".join(tokens)
 
     def center_of(self, link: str) -> str | None:

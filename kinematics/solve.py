@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
 import numpy as np
@@ -40,6 +40,13 @@ from structure.errors import MechanismError
 from structure.model import PairKind
 
 from .equations import evaluate, rotate_many
+from .frames import (
+    GROUND_FRAME,
+    Frame,
+    LinkTable,
+    frame_of_columns,
+    unwrapped,
+)
 from .plan import GroupStep, SolvePlan
 
 __all__ = [
@@ -77,15 +84,27 @@ class SingularPoseError(MechanismError):
 
 @dataclass(frozen=True)
 class Motion:
-    """Arrays over poses: ``q``, ``qd``, ``qdd`` per link (shape (N, 3)), and the inputs."""
+    """Arrays over poses: ``q``, ``qd``, ``qdd`` per link (shape (N, 3)), and the inputs.
+
+    ``frames`` holds the links solved in closed form as
+    :class:`~kinematics.frames.Frame` s; their ``q`` (which needs the angle's
+    ``arctan2``) is computed the first time it is read, and :meth:`point`
+    uses the frame directly.
+    """
 
     inputs: np.ndarray
     q: Mapping[str, np.ndarray]
     qd: Mapping[str, np.ndarray]
     qdd: Mapping[str, np.ndarray]
+    frames: Mapping[str, Frame] = field(default_factory=dict)
 
     def point(self, link: str, c: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Position, velocity, acceleration (each (N, 2)) of sketch point ``c`` on ``link``."""
+        frame = self.frames.get(link)
+        if frame is not None:
+            n = self.inputs.shape[0]
+            x, y, vx, vy, ax, ay = frame.point(c)
+            return _pairs(x, y, n), _pairs(vx, vy, n), _pairs(ax, ay, n)
         q, v, a = self.q[link], self.qd[link], self.qdd[link]
         r = rotate_many(q[:, 2], c)
         jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
@@ -138,86 +157,52 @@ def _fmt(inputs: np.ndarray) -> str:
     return ", ".join(f"{x:.6g}" for x in np.atleast_1d(inputs))
 
 
-class _Poses(dict):
-    """Link poses (N, 3) by link, with the cosine and sine of each angle kept once computed."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self._trig: dict[str, tuple[np.ndarray, np.ndarray]] = {}
-
-    def __setitem__(self, link: str, value: np.ndarray) -> None:
-        self._trig.pop(link, None)
-        super().__setitem__(link, value)
-
-    def place(self, link: str, value: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> None:
-        super().__setitem__(link, value)
-        self._trig[link] = (cos, sin)
-
-    def trig(self, link: str) -> tuple[np.ndarray, np.ndarray]:
-        found = self._trig.get(link)
-        if found is None:
-            theta = self[link][:, 2]
-            found = self._trig[link] = (np.cos(theta), np.sin(theta))
-        return found
-
-
-def _rot(trig: tuple[np.ndarray, np.ndarray], v: np.ndarray) -> np.ndarray:
-    """``R(θ_k)·v`` from the cosines and sines of the θ_k; ``v`` (2,) or (N, 2)."""
-    c, s = trig
-    out = np.empty((c.shape[0], 2))
-    vx, vy = v[..., 0], v[..., 1]
-    out[:, 0] = c * vx - s * vy
-    out[:, 1] = s * vx + c * vy
-    return out
-
-
 def _norm(v: np.ndarray) -> np.ndarray:
     """Length of each row of an (N, 2) array (``np.hypot`` is several times slower)."""
     return np.sqrt(v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1])
 
 
-def _unwrapped(theta: np.ndarray) -> np.ndarray:
-    """Angles made continuous along the poses (jumps of 2π removed), like ``np.unwrap``."""
-    if theta.shape[0] < 2:
-        return theta
-    turns = np.round(np.diff(theta) / (2 * math.pi))
-    if not turns.any():
-        return theta
-    out = theta.copy()
-    out[1:] -= 2 * math.pi * np.cumsum(turns)
+def _pairs(x, y, n: int) -> np.ndarray:
+    """An (N, 2) array from two columns (arrays or floats)."""
+    out = np.empty((n, 2))
+    out[:, 0] = x
+    out[:, 1] = y
     return out
 
 
-def _pose(x: np.ndarray, theta: np.ndarray) -> np.ndarray:
-    out = np.empty((theta.shape[0], 3))
-    out[:, :2] = x
-    out[:, 2] = theta
-    return out
-
-
-def _place_drivers(plan: SolvePlan, inputs: np.ndarray, q: dict, qd: dict, qdd: dict) -> None:
-    n = inputs.shape[0]
+def _place_drivers(
+    plan: SolvePlan, inputs: np.ndarray, frames: dict[str, Frame], tables: tuple
+) -> None:
+    """Each driver's frame: a crank turned by its input about its pivot, a slider moved along."""
     for k, d in enumerate(plan.drivers):
         value = inputs[:, k]
         if d.kind == "R":
-            # turn by `value` about the pivot: x = c − R(φ)·c keeps the pivot in place
-            trig = (np.cos(value), np.sin(value))
-            r = _rot(trig, d.pivot)
-            jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
-            if isinstance(q, _Poses):
-                q.place(d.link, _pose(d.pivot - r, value), *trig)
-            else:
-                q[d.link] = _pose(d.pivot - r, value)
-            qd[d.link] = np.column_stack([-d.speed * jr, np.full(n, d.speed)])
-            qdd[d.link] = np.column_stack(
-                [-d.acceleration * jr + d.speed**2 * r, np.full(n, d.acceleration)]
-            )
+            px, py = float(d.pivot[0]), float(d.pivot[1])
+            frames[d.link] = Frame(
+                d.pivot.copy(), px, py, 0.0, 0.0, 0.0, 0.0,
+                np.cos(value), np.sin(value), float(d.speed), float(d.acceleration), value,
+            )  # fmt: skip
         else:
-            q[d.link] = np.column_stack([np.outer(value, d.direction), np.zeros(n)])
-            qd[d.link] = np.column_stack([np.outer(np.full(n, d.speed), d.direction), np.zeros(n)])
-            qdd[d.link] = np.column_stack(
-                [np.outer(np.full(n, d.acceleration), d.direction), np.zeros(n)]
-            )
+            ux, uy = float(d.direction[0]), float(d.direction[1])
+            v, a = float(d.speed), float(d.acceleration)
+            frames[d.link] = Frame(
+                np.zeros(2), value * ux, value * uy, v * ux, v * uy, a * ux, a * uy,
+                1.0, 0.0, 0.0, 0.0, 0.0,
+            )  # fmt: skip
+        for table in tables:
+            table.declare(d.link)
+
+
+def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
+    """The frame of a link solved earlier (the ground's if it is not a moving link)."""
+    frame = frames.get(link)
+    if frame is not None:
+        return frame
+    q, qd, qdd = tables
+    if link not in q:
+        return GROUND_FRAME
+    frame = frames[link] = frame_of_columns(q[link], qd[link], qdd[link])
+    return frame
 
 
 def _system(
@@ -297,8 +282,9 @@ def _sketch_angle(v: np.ndarray) -> float:
 def _world(q: Mapping, link: str, c: np.ndarray, n: int) -> np.ndarray:
     if link not in q:
         return np.broadcast_to(c, (n, 2)).copy()
-    if isinstance(q, _Poses):
-        return q[link][:, :2] + _rot(q.trig(link), c)
+    frame = q.frame(link) if isinstance(q, LinkTable) else None
+    if frame is not None:
+        return _pairs(*frame.position(c), n)
     return q[link][:, :2] + rotate_many(q[link][:, 2], c)
 
 
@@ -341,7 +327,7 @@ def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) 
 
     The pairs fix the dyad as follows (``x_Y = x_X + s·R(θ_X)·u`` and
     ``θ_Y = θ_X`` for a prismatic pair, a common point for a revolute pair):
-    RRR a circle–circle and RRP a circle–line intersection, RPR a circle in
+    (RRR and RRP are placed by :func:`_dyad_frames`.) RPR a circle in
     the slide offset, PRP and RPP a 2×2 linear system. The root is the one of
     the sketch (or the other, for a group in ``plan.flip``).
     """
@@ -371,49 +357,6 @@ def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) 
         l1, l2, e1, e2 = l2, l1, e2, e1
         kinds = kinds[::-1]
     tol = 1e-12 * plan.length**2
-    if kinds == ("R", "R", "R"):
-        b, c, d = point(e1.point), point(mid.point), point(e2.point)
-        if b is None or c is None or d is None:
-            return False
-        s0 = flip * np.sign(_cross(d - b, c - b))
-        if s0 == 0:
-            return False
-        r1, r2 = float(np.hypot(*(c - b))), float(np.hypot(*(c - d)))
-        bw, dw = _world(q, e1.links[1], b, n), _world(q, e2.links[1], d, n)
-        e = dw - bw
-        dist = _norm(e)
-        a = (r1**2 - r2**2 + dist**2) / (2 * dist)
-        h2 = r1**2 - a**2
-        if (bad := h2 < -tol).any():
-            raise _not_assembled(step, inputs, bad)
-        u = e / dist[:, None]
-        h = s0 * np.sqrt(np.maximum(h2, 0.0))
-        cw = bw + a[:, None] * u + h[:, None] * np.stack([-u[:, 1], u[:, 0]], axis=1)
-        _place(q, l1, bw, cw, b, c)
-        _place(q, l2, dw, cw, d, c)
-        return True
-    if kinds == ("R", "R", "P"):  # rod l1, slider l2 on the guide of e2's known link
-        b, c, u0 = point(e1.point), point(mid.point), _direction(plan, e2.pair)
-        if b is None or c is None or u0 is None:
-            return False
-        sigma = flip * np.sign(u0 @ (c - b))
-        if sigma == 0:
-            return False
-        guide = e2.links[1]
-        theta = _angle_of(q, guide, n)
-        bw = _world(q, e1.links[1], b, n)
-        origin = _world(q, guide, c, n)  # where c would be if it were fixed to the guide
-        u = rotate_many(theta, u0)
-        w = origin - bw
-        uw = np.einsum("ij,ij->i", u, w)
-        disc = uw**2 - np.einsum("ij,ij->i", w, w) + float((c - b) @ (c - b))
-        if (bad := disc < -tol).any():
-            raise _not_assembled(step, inputs, bad)
-        s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
-        cw = origin + s[:, None] * u
-        _place(q, l1, bw, cw, b, c)
-        q[l2] = np.column_stack([cw - rotate_many(theta, c), theta])
-        return True
     if kinds == ("R", "P", "R"):  # both links turn together; the slide spans the pins
         b, d, u0 = point(e1.point), point(e2.point), _direction(plan, mid.pair)
         if b is None or d is None or u0 is None:
@@ -431,7 +374,7 @@ def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) 
         s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
         span = w[None, :] + s[:, None] * u0[None, :]
         theta = np.arctan2(e[:, 1], e[:, 0]) - np.arctan2(span[:, 1], span[:, 0])
-        theta = _unwrapped((theta + math.pi) % (2 * math.pi) - math.pi)
+        theta = unwrapped((theta + math.pi) % (2 * math.pi) - math.pi)
         q[l1] = np.column_stack([bw - rotate_many(theta, b), theta])
         q[l2] = np.column_stack([dw - rotate_many(theta, d), theta])
         return True
@@ -470,20 +413,231 @@ def _closed_form(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) 
     return False
 
 
-def _place(q: dict, link: str, pw: np.ndarray, cw: np.ndarray, p: np.ndarray, c: np.ndarray):
-    """Pose of a link whose sketch points p, c are at world points pw, cw."""
-    sketch = (c - p) / float(np.hypot(*(c - p)))
-    span = cw - pw
-    length = _norm(span)
-    ux, uy = span[:, 0] / length, span[:, 1] / length
-    cos = sketch[0] * ux + sketch[1] * uy
-    sin = sketch[0] * uy - sketch[1] * ux
-    theta = _unwrapped(np.arctan2(sin, cos))
-    value = _pose(pw - _rot((cos, sin), p), theta)
-    if isinstance(q, _Poses):
-        q.place(link, value, cos, sin)
+def _dead_centre(step: GroupStep, inputs: np.ndarray, sine: np.ndarray) -> None:
+    bad = np.abs(sine) <= _SINGULAR
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise SingularPoseError(
+            f"group {step.label} is at a dead centre at input {_fmt(inputs[k])}: its "
+            f"Jacobian loses rank (sine of the transmission angle {sine[k]:.2g}; "
+            "transmission angle 0° or 180°)",
+            step.label,
+            tuple(inputs[k]),
+        )
+
+
+def _arrays(n: int, *values):
+    """The values as (N,) arrays (a dyad between two ground pins has only floats)."""
+    return tuple(v if isinstance(v, np.ndarray) else np.full(n, float(v)) for v in values)
+
+
+def _pin(frames: dict[str, Frame], tables: tuple, pins: dict, link: str, point: np.ndarray):
+    """``(x, y, vx, vy, ax, ay)`` of a pin on a known link, each computed once per solve."""
+    key = (link, float(point[0]), float(point[1]))
+    found = pins.get(key)
+    if found is None:
+        found = pins[key] = _known_frame(frames, tables, link).point(point)
+    return found
+
+
+def _circle_circle(
+    step: GroupStep,
+    inputs: np.ndarray,
+    pin_b: tuple,
+    pin_d: tuple,
+    len1: float,
+    len2: float,
+    side: float,
+    tol: float,
+) -> tuple:
+    """``(x, y, vx, vy, ax, ay)`` of an RRR dyad's joint C from its pins B and D.
+
+    C is at distance √len1 from B and √len2 from D, on the ``side`` of BD;
+    ``v_C = v_B + ω1·J·BC = v_D + ω2·J·DC`` and
+    ``a_C = a_B + ε1·J·BC − ω1²·BC = a_D + ε2·J·DC − ω2²·DC`` by Cramer's
+    rule. Written with in-place operations: at 10^5 poses, fresh temporaries
+    cost more (in page faults) than the arithmetic.
+    """
+    bx, by, bvx, bvy, bax, bay = pin_b
+    dx, dy, dvx, dvy, dax, day = pin_d
+    n = inputs.shape[0]
+    ex, ey = _arrays(n, dx - bx, dy - by)  # fresh arrays, free to overwrite
+    d2 = ex * ex
+    t = ey * ey
+    d2 += t
+    inv = np.sqrt(d2)
+    np.reciprocal(inv, out=inv)
+    along = d2
+    along += len1 - len2
+    along *= inv
+    along *= 0.5
+    h = np.multiply(along, along, out=t)
+    np.subtract(len1, h, out=h)
+    if (bad := h < -tol).any():
+        raise _not_assembled(step, inputs, bad)
+    np.maximum(h, 0.0, out=h)
+    np.sqrt(h, out=h)
+    h *= side
+    h *= inv
+    along *= inv
+    r1x = along * ex  # C − B
+    r1y = along * ey
+    ey *= h
+    ex *= h
+    r1x -= ey
+    r1y += ex
+    cx, cy = bx + r1x, by + r1y
+    r2x, r2y = cx - dx, cy - dy  # C − D
+    cross = r1x * r2y
+    t = np.multiply(r1y, r2x, out=ex)
+    cross -= t
+    _dead_centre(step, inputs, cross * (1.0 / math.sqrt(len1 * len2)))
+    inv = np.reciprocal(cross, out=cross)
+    gx, gy = dvx - bvx, dvy - bvy
+    w1 = gx * r2x
+    w1 += np.multiply(gy, r2y, out=t)
+    w1 *= inv
+    w2 = gx * r1x
+    w2 += np.multiply(gy, r1y, out=t)
+    w2 *= inv
+    vcx = w1 * r1y
+    np.subtract(bvx, vcx, out=vcx)
+    vcy = w1 * r1x
+    vcy += bvy
+    w1 *= w1  # from here on ω1² and ω2²
+    w2 *= w2
+    gx = w1 * r1x
+    gx -= np.multiply(w2, r2x, out=t)
+    gx += dax
+    gx -= bax
+    gy = w1 * r1y
+    gy -= np.multiply(w2, r2y, out=t)
+    gy += day
+    gy -= bay
+    e1 = np.multiply(gx, r2x, out=gx)
+    e1 += np.multiply(gy, r2y, out=t)
+    e1 *= inv
+    acx = e1 * r1y
+    acx += np.multiply(w1, r1x, out=t)
+    np.subtract(bax, acx, out=acx)
+    acy = e1 * r1x
+    acy -= np.multiply(w1, r1y, out=t)
+    acy += bay
+    return cx, cy, vcx, vcy, acx, acy
+
+
+def _dyad_frames(
+    step: GroupStep,
+    plan: SolvePlan,
+    frames: dict[str, Frame],
+    tables: tuple,
+    pins: dict,
+    inputs: np.ndarray,
+) -> bool:
+    """Solve an RRR or RRP dyad for every pose in closed form, positions and rates at once.
+
+    False when the group is not such a dyad (or its sketch does not fix the
+    assembly mode); the general path solves it then. The pins' positions,
+    velocities and accelerations come from the vector equations of the
+    textbook, by Cramer's rule, and each link's motion is kept as a
+    :class:`~kinematics.frames.Frame` (no ``arctan2``):
+
+    * RRR (pins B, D on known links, joint C): C is the circle–circle
+      intersection on the sketch's side; ``v_C = v_B + ω1·J·BC = v_D + ω2·J·DC``
+      and ``a_C = a_B + ε1·J·BC − ω1²·BC = a_D + ε2·J·DC − ω2²·DC``.
+    * RRP (rod from pin B to joint C, slider on the guide of a known link):
+      C is the circle–line intersection; ``v_C = v_K + ṡ·u = v_B + ω1·J·BC``
+      and ``a_C = a_K + s̈·u + 2·ω_g·ṡ·J·u = a_B + ε1·J·BC − ω1²·BC``, with
+      K the guide's point under C and the Coriolis term ``2·ω_g·ṡ·J·u``.
+    """
+    g = step.group
+    if g is None or g.kind not in ("RRR", "RRP") or len(step.links) != 2:
+        return False
+    m = plan.mechanism
+    (mid,) = g.internal_pairs
+    ext = {p.links[0]: p for p in g.external_pairs}
+    if len(ext) != 2 or len(g.external_pairs) != 2:
+        return False
+
+    def point(name: str | None) -> np.ndarray | None:
+        xy = m.coordinates(name) if name is not None else None
+        return None if xy is None else np.array(xy, dtype=float)
+
+    c = point(mid.point)
+    if c is None:
+        return False
+    n = inputs.shape[0]
+    flip = -1.0 if g.label in plan.flip else 1.0
+    tol = 1e-12 * plan.length**2
+    if g.kind == "RRR":
+        l1, l2 = step.links
+        e1, e2 = ext[l1], ext[l2]
+        b, d = point(e1.point), point(e2.point)
+        if b is None or d is None:
+            return False
+        side = flip * np.sign(_cross(d - b, c - b))
+        if side == 0:
+            return False
+        pins_b = bx, by, bvx, bvy, bax, bay = _pin(frames, tables, pins, e1.links[1], b)
+        pins_d = dx, dy, dvx, dvy, dax, day = _pin(frames, tables, pins, e2.links[1], d)
+        s1, s2 = c - b, c - d
+        joint = (c, *_circle_circle(step, inputs, pins_b, pins_d, float(s1 @ s1), float(s2 @ s2),
+                                    side, tol))  # fmt: skip
+        pins[(l1, *c)] = pins[(l2, *c)] = joint[1:]
+        frames[l1] = Frame(b, bx, by, bvx, bvy, bax, bay, second=joint)
+        frames[l2] = Frame(d, dx, dy, dvx, dvy, dax, day, second=joint)
     else:
-        q[link] = value
+        rod = next((x for x in step.links if ext[x].kind is PairKind.R), None)
+        slider = next((x for x in step.links if ext[x].kind is PairKind.P), None)
+        if rod is None or slider is None:
+            return False
+        b, u0 = point(ext[rod].point), _direction(plan, ext[slider].pair)
+        if b is None or u0 is None:
+            return False
+        sigma = flip * np.sign(u0 @ (c - b))
+        if sigma == 0:
+            return False
+        s1 = c - b
+        len1 = float(s1 @ s1)
+        fg = _known_frame(frames, tables, ext[slider].links[1])
+        bx, by, bvx, bvy, bax, bay = _pin(frames, tables, pins, ext[rod].links[1], b)
+        ox, oy, ovx, ovy, oax, oay = fg.point(c)  # the guide's point at C in the sketch
+        ux = fg.cos * u0[0] - fg.sin * u0[1]
+        uy = fg.sin * u0[0] + fg.cos * u0[1]
+        wx, wy = _arrays(n, ox - bx, oy - by)
+        uw = ux * wx + uy * wy
+        disc = uw * uw - (wx * wx + wy * wy) + len1
+        if (bad := disc < -tol).any():
+            raise _not_assembled(step, inputs, bad)
+        s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
+        r1x, r1y = wx + s * ux, wy + s * uy  # C − B
+        cx, cy = bx + r1x, by + r1y
+        wg, eg = fg.omega, fg.epsilon
+        wgs = wg * wg
+        kvx, kvy = ovx - wg * s * uy, ovy + wg * s * ux  # the guide's point K under C
+        kax = oax - eg * s * uy - wgs * s * ux
+        kay = oay + eg * s * ux - wgs * s * uy
+        det = r1x * ux + r1y * uy
+        _dead_centre(step, inputs, det / math.sqrt(len1))
+        inv = 1.0 / det
+        gx, gy = kvx - bvx, kvy - bvy
+        w1 = (ux * gy - uy * gx) * inv
+        sd = -(r1x * gx + r1y * gy) * inv
+        w1s = w1 * w1
+        coriolis = 2.0 * wg * sd
+        gx = kax - coriolis * uy - bax + w1s * r1x
+        gy = kay + coriolis * ux - bay + w1s * r1y
+        e1_ = (ux * gy - uy * gx) * inv
+        vcx, vcy = bvx - w1 * r1y, bvy + w1 * r1x
+        acx, acy = bax - e1_ * r1y - w1s * r1x, bay + e1_ * r1x - w1s * r1y
+        joint = (c, cx, cy, vcx, vcy, acx, acy)
+        pins[(rod, *c)] = pins[(slider, *c)] = joint[1:]
+        frames[rod] = Frame(b, bx, by, bvx, bvy, bax, bay, second=joint)
+        frames[slider] = Frame(c, cx, cy, vcx, vcy, acx, acy, turns_with=fg)
+    for link in step.links:
+        for table in tables:
+            table.declare(link)
+    return True
 
 
 _CHUNK = 64  # poses solved together by a batched Newton, from a predictor
@@ -638,19 +792,19 @@ def _solve_poses(
 ) -> Motion:
     n = inputs.shape[0]
     ground = plan.mechanism.ground
-    q: dict[str, np.ndarray] = _Poses()
-    qd: dict[str, np.ndarray] = {}
-    qdd: dict[str, np.ndarray] = {}
-    _place_drivers(plan, inputs, q, qd, qdd)
+    frames: dict[str, Frame] = {}
+    q, qd, qdd = tables = tuple(LinkTable(frames, order, n) for order in ("q", "qd", "qdd"))
+    _place_drivers(plan, inputs, frames, tables)
+    pins: dict = {}
     for step in plan.steps:
+        if _dyad_frames(step, plan, frames, tables, pins, inputs):
+            continue
         if not _closed_form(step, plan, q, inputs):
             start = {
                 link: np.array(guess[link], dtype=float) if guess and link in guess else np.zeros(3)
                 for link in step.links
             }
             _follow(step, plan, q, inputs, start)
-        elif _closed_form_rates(step, plan, q, qd, qdd, inputs):
-            continue
         _, jac, known_v, _ = _system(step, q, qd, n)
         s = np.linalg.svd(_scaled(jac, plan.length), compute_uv=False)
         ratio = s[:, -1] / s[:, 0]
@@ -675,137 +829,7 @@ def _solve_poses(
     zero = np.zeros((n, 3))
     for table in (q, qd, qdd):
         table.setdefault(ground, zero)
-    return Motion(inputs, MappingProxyType(q), MappingProxyType(qd), MappingProxyType(qdd))
-
-
-def _point_motion(
-    q: Mapping, qd: Mapping, qdd: Mapping, link: str, world: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """Velocity and acceleration of the point of ``link`` now at ``world`` (N, 2)."""
-    n = world.shape[0]
-    if link not in q:
-        return np.zeros((n, 2)), np.zeros((n, 2))
-    r = world - q[link][:, :2]
-    jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
-    w, e = qd[link][:, 2:3], qdd[link][:, 2:3]
-    return qd[link][:, :2] + w * jr, qdd[link][:, :2] + e * jr - w**2 * r
-
-
-def _set_rates(
-    qd: dict,
-    qdd: dict,
-    link: str,
-    x: np.ndarray,
-    p: np.ndarray,
-    v: np.ndarray,
-    a: np.ndarray,
-    w: np.ndarray,
-    e: np.ndarray,
-) -> None:
-    """Link rates from one of its points: at world ``p``, velocity ``v``, acceleration ``a``."""
-    r = p - x
-    jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
-    qd[link] = np.column_stack([v - w[:, None] * jr, w])
-    qdd[link] = np.column_stack([a - e[:, None] * jr + (w**2)[:, None] * r, e])
-
-
-def _dead_centre(step: GroupStep, inputs: np.ndarray, sine: np.ndarray) -> None:
-    bad = np.abs(sine) <= _SINGULAR
-    if bad.any():
-        k = int(np.argmax(bad))
-        raise SingularPoseError(
-            f"group {step.label} is at a dead centre at input {_fmt(inputs[k])}: its "
-            f"Jacobian loses rank (sine of the transmission angle {sine[k]:.2g}; "
-            "transmission angle 0° or 180°)",
-            step.label,
-            tuple(inputs[k]),
-        )
-
-
-def _closed_form_rates(
-    step: GroupStep, plan: SolvePlan, q: dict, qd: dict, qdd: dict, inputs: np.ndarray
-) -> bool:
-    """Velocities and accelerations of an RRR or RRP dyad from its pins, 2×2 at a time.
-
-    RRR: v_C = v_B + ω1·J(C − B) = v_D + ω2·J(C − D), and likewise for the
-    accelerations with the centripetal terms. RRP: the slider's point C moves
-    with its guide plus ṡ along it, and a Coriolis term 2·ω_guide·ṡ·J·u.
-    """
-    g = step.group
-    if g is None or g.kind not in ("RRR", "RRP") or len(step.links) != 2:
-        return False
-    m = plan.mechanism
-    n = inputs.shape[0]
-    (mid,) = g.internal_pairs
-    ext = {p.links[0]: p for p in g.external_pairs}
-    if len(ext) != 2 or mid.point is None or m.coordinates(mid.point) is None:
-        return False
-    c = np.array(m.coordinates(mid.point), dtype=float)
-
-    def world(link: str, sketch: np.ndarray) -> np.ndarray:
-        return _world(q, link, sketch, n)
-
-    if g.kind == "RRR":
-        l1, l2 = step.links
-        e1, e2 = ext[l1], ext[l2]
-        if e1.point is None or e2.point is None:
-            return False
-        b = np.array(m.coordinates(e1.point), dtype=float)
-        d = np.array(m.coordinates(e2.point), dtype=float)
-        bw, dw, cw = world(l1, b), world(l2, d), world(l1, c)
-        vb, ab = _point_motion(q, qd, qdd, e1.links[1], bw)
-        vd, ad = _point_motion(q, qd, qdd, e2.links[1], dw)
-        r1, r2 = cw - bw, cw - dw
-        det = r1[:, 0] * r2[:, 1] - r1[:, 1] * r2[:, 0]
-        _dead_centre(step, inputs, det / (_norm(r1) * _norm(r2)))
-        # ω1·J·r1 − ω2·J·r2 = rhs  ⇔  ω1·r1 − ω2·r2 = −J·rhs
-        rhs = vd - vb
-        w1, w2 = _cramer(r1, -r2, np.stack([rhs[:, 1], -rhs[:, 0]], axis=1))
-        rhs = ad - ab + (w1**2)[:, None] * r1 - (w2**2)[:, None] * r2
-        e1_, e2_ = _cramer(r1, -r2, np.stack([rhs[:, 1], -rhs[:, 0]], axis=1))
-        vc = vb + w1[:, None] * np.stack([-r1[:, 1], r1[:, 0]], axis=1)
-        ac = ab + e1_[:, None] * np.stack([-r1[:, 1], r1[:, 0]], axis=1) - (w1**2)[:, None] * r1
-        _set_rates(qd, qdd, l1, q[l1][:, :2], cw, vc, ac, w1, e1_)
-        _set_rates(qd, qdd, l2, q[l2][:, :2], cw, vc, ac, w2, e2_)
-        return True
-    rod = next((x for x in step.links if ext[x].kind is PairKind.R), None)
-    slider = next((x for x in step.links if ext[x].kind is PairKind.P), None)
-    if rod is None or slider is None or ext[rod].point is None:
-        return False
-    pair = m.pair(ext[slider].pair)
-    if pair.angle is None:
-        return False
-    b = np.array(m.coordinates(ext[rod].point), dtype=float)
-    guide = ext[slider].links[1]
-    bw, cw = world(rod, b), world(rod, c)
-    vb, ab = _point_motion(q, qd, qdd, ext[rod].links[1], bw)
-    vk, ak = _point_motion(q, qd, qdd, guide, cw)
-    theta = q[guide][:, 2] if guide in q else np.zeros(n)
-    wk = qd[guide][:, 2] if guide in qd else np.zeros(n)
-    ek = qdd[guide][:, 2] if guide in qdd else np.zeros(n)
-    u = np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
-    r1 = cw - bw
-    jr1 = np.stack([-r1[:, 1], r1[:, 0]], axis=1)
-    ju = np.stack([-u[:, 1], u[:, 0]], axis=1)
-    # ω1·J·r1 − ṡ·u = v_K(C) − v_B
-    det = jr1[:, 0] * -u[:, 1] - jr1[:, 1] * -u[:, 0]
-    _dead_centre(step, inputs, det / _norm(r1))
-    w1, sd = _cramer(jr1, -u, vk - vb)
-    rhs = ak - ab + (w1**2)[:, None] * r1 + (2 * wk * sd)[:, None] * ju
-    e1_, _ = _cramer(jr1, -u, rhs)
-    vc = vb + w1[:, None] * jr1
-    ac = ab + e1_[:, None] * jr1 - (w1**2)[:, None] * r1
-    _set_rates(qd, qdd, rod, q[rod][:, :2], cw, vc, ac, w1, e1_)
-    _set_rates(qd, qdd, slider, q[slider][:, :2], cw, vc, ac, wk, ek)
-    return True
-
-
-def _cramer(a: np.ndarray, b: np.ndarray, rhs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Solve x·a + y·b = rhs for many 2-vectors (rows)."""
-    d = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
-    x = (rhs[:, 0] * b[:, 1] - rhs[:, 1] * b[:, 0]) / d
-    y = (a[:, 0] * rhs[:, 1] - a[:, 1] * rhs[:, 0]) / d
-    return x, y
+    return Motion(inputs, q, qd, qdd, MappingProxyType(frames))
 
 
 def _least_squares(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:

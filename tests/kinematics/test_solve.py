@@ -189,11 +189,35 @@ def test_closed_form_dyads_agree_with_newton(name, monkeypatch):
     except AssemblyError:
         pytest.skip("this linkage does not reach ±0.1 rad from its sketch")
     monkeypatch.setattr(solve_module, "_closed_form", lambda *args: False)
+    monkeypatch.setattr(solve_module, "_dyad_frames", lambda *args: False)
     newton = solve_module.solve_poses(plan, inputs)
     for link in closed.q:
         np.testing.assert_allclose(closed.q[link], newton.q[link], atol=1e-10)
         np.testing.assert_allclose(closed.qd[link], newton.qd[link], atol=1e-8)
         np.testing.assert_allclose(closed.qdd[link], newton.qdd[link], atol=1e-6)
+
+
+@pytest.mark.parametrize("name", ["fourbar.edges", "jansen.edges", "crank_slider.edges"])
+def test_frames_over_a_whole_turn_agree_with_newton_and_the_jacobian(name, monkeypatch):
+    # The closed-form dyads keep each link as a frame (pins, lazy angle); the
+    # general path solves the same groups by Newton and J·q̇ = −J_k·q̇_k.
+    import kinematics.solve as solve_module
+
+    plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
+    inputs = np.linspace(0.0, 2 * math.pi, 73)[:, None]
+    closed = solve_module.solve_poses(plan, inputs)
+    drivers = {d.link for d in plan.drivers}
+    assert set(closed.frames) > drivers  # the dyads were solved in closed form
+    monkeypatch.setattr(solve_module, "_dyad_frames", lambda *args: False)
+    newton = solve_module.solve_poses(plan, inputs)
+    assert set(newton.frames) <= drivers
+    for link in newton.q:
+        np.testing.assert_allclose(closed.q[link], newton.q[link], atol=1e-10)
+        np.testing.assert_allclose(closed.qd[link], newton.qd[link], atol=1e-8)
+        np.testing.assert_allclose(closed.qdd[link], newton.qdd[link], atol=1e-6)
+    for point, (link, c) in plan.points.items():
+        for got, want in zip(closed.point(link, c), newton.point(link, c), strict=True):
+            np.testing.assert_allclose(got, want, atol=1e-8, err_msg=point)
 
 
 def test_flipping_a_dyad_assembles_its_mirror_image():

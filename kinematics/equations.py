@@ -10,7 +10,12 @@ kind    rows  equation
 HINGE   2     p_a − p_b = 0, p_L = x_L + R(θ_L)·c (the pin on both links)
 ANGLE   1     θ_a − θ_b = 0 (a prismatic pair locks the relative rotation)
 SLIDE   1     (R(θ_a)·n)·(p_b − p_a) = 0 (n ⊥ the slide direction at the sketch)
+GEAR    1     (θ_a − θ_c) + k·(θ_b − θ_c) = 0: gears a, b rolling on each other,
+              their axes on the carrier c; k = ±z_b/z_a (+ external, − internal)
 ======  ====  ===============================================================
+
+A GEAR equation involves three links; the group solver handles it itself
+(:func:`evaluate` covers the two-link pairs).
 
 :func:`evaluate` gives, for many poses at once (arrays with a leading pose
 axis), the residual Φ, the partial derivatives with respect to ``(x, y, θ)``
@@ -71,6 +76,8 @@ class Equation:
     point: np.ndarray = field(default_factory=lambda: np.zeros(2))
     normal: np.ndarray = field(default_factory=lambda: np.zeros(2))
     pair: int = 0  # the mechanism's pair it comes from (0: a compound hinge's canonical pair)
+    carrier: str = ""  # GEAR: the link that carries both gears' axes
+    ratio: float = 0.0  # GEAR: k = ±z_b/z_a
 
     @property
     def size(self) -> int:
@@ -85,6 +92,8 @@ def evaluate(
     Shapes: Φ and the bias (N, size), the partials (N, size, 3).
     """
     n = qa.shape[0]
+    if eq.kind == "GEAR":
+        raise ValueError("a GEAR equation involves three links: see kinematics.solve._system")
     if eq.kind == "ANGLE":
         phi = (qa[:, 2] - qb[:, 2])[:, None]
         ja = np.broadcast_to(np.array([[[0.0, 0.0, 1.0]]]), (n, 1, 3))

@@ -24,7 +24,7 @@ from types import MappingProxyType
 import numpy as np
 
 from structure.assur import AssurGroup
-from structure.errors import EdgeListError, EdgeListProblem
+from structure.errors import EdgeListError, EdgeListProblem, MechanismError
 from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
@@ -60,9 +60,12 @@ class GroupStep:
     group: AssurGroup | None
     equations: tuple[Equation, ...]
     redundant_link: str = ""
+    unknowns: tuple[str, ...] = ()  # the links solved, when not the group's (rolling gears)
 
     @property
     def links(self) -> tuple[str, ...]:
+        if self.unknowns:
+            return self.unknowns
         return self.group.links if self.group is not None else (self.redundant_link,)
 
     @property
@@ -73,7 +76,7 @@ class GroupStep:
 
     @property
     def kind(self) -> str | None:
-        return self.group.kind if self.group is not None else None
+        return self.group.kind if self.group is not None and not self.unknowns else None
 
 
 @dataclass(frozen=True)
@@ -95,6 +98,7 @@ class SolvePlan:
     flip: frozenset[str] = frozenset()
     higher_pairs: tuple[str, ...] = ()
     contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
+    rolling: tuple[GroupStep, ...] | None = None
 
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
@@ -215,6 +219,7 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
             points[pt.name] = (pt.on, np.array([pt.x, pt.y]))
     coords = np.array([[p.x, p.y] for p in m.points.values()]) if m.points else np.zeros((1, 2))
     span = float(np.max(np.ptp(coords, axis=0))) if len(coords) > 1 else 1.0
+    rolling = _rolling_steps(report, steps) if report.replacements else None
     dyads = {s.label for s in steps if s.group is not None and s.group.kind is not None}
     unknown = set(flip) - dyads
     if unknown:
@@ -238,4 +243,43 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
             )
             for r in report.replacements
         ),
+        rolling,
     )
+
+
+def _rolling_steps(
+    report: StructuralReport, steps: list[GroupStep]
+) -> tuple[GroupStep, ...] | None:
+    """The steps with each gear mesh's virtual link replaced by its rolling constraint.
+
+    None when a higher pair is not a gear mesh with both tooth numbers.
+    """
+    from .gears import meshes  # gears imports sympy; only mechanisms with meshes need it
+
+    try:
+        found = {mesh.pair.id: mesh for mesh in meshes(report.mechanism)}
+    except MechanismError:  # a mesh without a carrier: only the sketch pose can be solved
+        return None
+    rolls: dict[str, Equation] = {}
+    for r in report.replacements:
+        mesh = found.get(r.pair.id)
+        if mesh is None or mesh.za is None or mesh.zb is None:
+            return None
+        sign = -1.0 if mesh.internal else 1.0
+        rolls[r.virtual_link] = Equation(
+            "GEAR", mesh.a, mesh.b, pair=r.pair.id, carrier=mesh.carrier,
+            ratio=sign * mesh.zb / mesh.za,
+        )  # fmt: skip
+    out = []
+    for step in steps:
+        virtual = [link for link in step.links if link in rolls]
+        if not virtual:
+            out.append(step)
+            continue
+        kept = tuple(eq for eq in step.equations if eq.a not in rolls and eq.b not in rolls)
+        unknowns = tuple(link for link in step.links if link not in rolls)
+        out.append(
+            GroupStep(step.group, kept + tuple(rolls[v] for v in virtual), step.redundant_link,
+                      unknowns)
+        )  # fmt: skip
+    return tuple(out)

@@ -29,6 +29,7 @@ name the group and the input; nothing is returned as NaN.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -219,6 +220,17 @@ def _system(
     bias = np.zeros((n, rows_total))
     row = 0
     for eq in step.equations:
+        if eq.kind == "GEAR":  # (θa − θc) + k·(θb − θc) = 0: linear, no bias term
+            coefficients = ((eq.a, 1.0), (eq.b, eq.ratio), (eq.carrier, -1.0 - eq.ratio))
+            for link, k in coefficients:
+                phi[:, row] += k * q.get(link, zero)[:, 2]
+                i = index.get(link)
+                if i is None:
+                    known[:, row] += k * v.get(link, zero)[:, 2]
+                else:
+                    jac[:, row, 3 * i + 2] += k
+            row += 1
+            continue
         qa, qb = q.get(eq.a, zero), q.get(eq.b, zero)
         va, vb = v.get(eq.a, zero), v.get(eq.b, zero)
         f, ja, jb, g = evaluate(eq, qa, qb, va, vb)
@@ -767,13 +779,16 @@ def solve_poses(
     if inputs.shape[1] != len(plan.drivers):
         inputs = inputs.reshape(-1, len(plan.drivers))
     if plan.higher_pairs and np.any(inputs != 0):
-        raise MechanismError(
-            "the higher pair(s) "
-            + ", ".join(plan.higher_pairs)
-            + " are replaced by virtual links that hold at the sketch pose only; "
-            "away from the sketch a cam needs its profile and a gear mesh its rolling "
-            "constraint, which are not supported yet: solve at the sketch pose"
-        )
+        if plan.rolling is None:
+            raise MechanismError(
+                "the higher pair(s) "
+                + ", ".join(plan.higher_pairs)
+                + " are replaced by virtual links that hold at the sketch pose only; away "
+                "from the sketch a cam needs its profile, which the format does not hold (a "
+                "gear mesh needs z=za,zb and a carrier): solve at the sketch pose"
+            )
+        # gear meshes roll: their virtual links give way to the rolling constraints
+        plan = dataclasses.replace(plan, steps=plan.rolling, higher_pairs=())
     if guess is None and _needs_continuation(plan):
         dense, picks = _densified(plan, inputs)
         if len(dense) > len(inputs):
@@ -869,6 +884,8 @@ def solve_pose(
     }
     points = {}
     for name, (link, c) in plan.points.items():
+        if link not in motion.q:  # on a virtual link, which a rolling gear mesh does without
+            continue
         x, v, a = motion.point(link, c)
         points[name] = PointState(link, _frozen(x[0]), _frozen(v[0]), _frozen(a[0]))
     return KinematicState(MappingProxyType(links), MappingProxyType(points), inputs)

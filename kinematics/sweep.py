@@ -142,16 +142,20 @@ def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -
     }
     points = {}
     for name, (link, c) in plan.points.items():
+        if link not in motion.q:  # on a virtual link: rolling gear meshes do without them
+            continue
         x, v, a = motion.point(link, c)
         points[name] = {"position": x, "velocity": v, "acceleration": a}
     transmission = {
         label: _angles(points[b]["position"], points[c]["position"], points[d]["position"])
         for label, (b, c, d) in _rrr_pins(plan).items()
+        if all(x in points for x in (b, c, d))
     }
     transmission.update(_rrp_transmission(plan, motion, points))
     transmission.update(_prismatic_transmission(plan, motion, points))
     balancing: dict[str, np.ndarray] = {}
-    if plan.mechanism.loads and not any(s.group is None for s in plan.steps):
+    rolled = any(link not in motion.q for link, *_ in plan.contacts)
+    if plan.mechanism.loads and not rolled and not any(s.group is None for s in plan.steps):
         forces = forces_over(plan, motion)
         balancing = {f"moment {k}": v for k, v in forces.balancing_moment.items()}
         if forces.balancing_force is not None:

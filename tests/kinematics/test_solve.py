@@ -137,6 +137,69 @@ def test_higher_pairs_are_solved_at_the_sketch_only():
         solve_pose(plan, (0.1,))
 
 
+def _planetary(epsilon: float) -> str:
+    """Sun 1 (z 20), planet 2 (z 20) on carrier C, fixed ring (z 60), module 0.02 m.
+
+    Each mesh's centres of curvature are the feet of the perpendiculars from
+    the gear centres onto the line of action (20° from the common tangent).
+    """
+    d = (math.sin(math.radians(20)), math.cos(math.radians(20)))
+
+    def foot(centre, pitch):
+        t = (centre[0] - pitch[0]) * d[0] + (centre[1] - pitch[1]) * d[1]
+        return f"{pitch[0] + t * d[0]:.15g} {pitch[1] + t * d[1]:.15g}"
+
+    o, b, k1, k2 = (0.0, 0.0), (0.4, 0.0), (0.2, 0.0), (0.6, 0.0)
+    return f"""
+driver C omega=2 epsilon={epsilon}
+0 C R O
+0 1 R O
+C 2 R B
+1 2 H K1 gear z=20,20 centers=N1,N2
+2 0 H K2 gear z=20,60 internal=0 centers=N3,N4
+point O 0 0
+point B 0.4 0
+point K1 0.2 0
+point K2 0.6 0
+point N1 {foot(o, k1)}
+point N2 {foot(b, k1)}
+point N3 {foot(b, k2)}
+point N4 {foot(o, k2)}
+"""
+
+
+def test_gear_meshes_roll_over_a_whole_cycle():
+    # Willis with the ring fixed: (ω1 − ωC)/(0 − ωC) = −z3/z1 = −3, so ω1 = 4·ωC;
+    # (ω2 − ωC)/(0 − ωC) = z3/z2 = 3 (internal), so ω2 = −2·ωC. Angles alike.
+    plan = plan_of(_planetary(epsilon=0.5))
+    phi = np.linspace(0.0, 2 * math.pi, 25)
+    motion = solve_poses(plan, phi[:, None])
+    np.testing.assert_allclose(motion.q["1"][:, 2], 4 * phi, atol=1e-9)
+    np.testing.assert_allclose(motion.q["2"][:, 2], -2 * phi, atol=1e-9)
+    np.testing.assert_allclose(motion.qd["1"][:, 2], 8.0, atol=1e-9)
+    np.testing.assert_allclose(motion.qd["2"][:, 2], -4.0, atol=1e-9)
+    np.testing.assert_allclose(motion.qdd["1"][:, 2], 2.0, atol=1e-9)
+    np.testing.assert_allclose(motion.qdd["2"][:, 2], -1.0, atol=1e-9)
+    x, v, a = motion.point("C", np.array([0.4, 0.0]))  # the planet's centre B on the carrier
+    r = 0.4 * np.column_stack([np.cos(phi), np.sin(phi)])
+    jr = np.column_stack([-r[:, 1], r[:, 0]])
+    np.testing.assert_allclose(x, r, atol=1e-12)
+    np.testing.assert_allclose(v, 2.0 * jr, atol=1e-12)
+    np.testing.assert_allclose(a, 0.5 * jr - 4.0 * r, atol=1e-12)
+    assert "v1" not in motion.q  # the virtual links hold at the sketch only
+
+
+def test_rolling_gears_agree_with_the_virtual_links_at_the_sketch():
+    # At the sketch the replacement by virtual links (centres of curvature) is
+    # exact to second order: velocities and accelerations as by rolling.
+    plan = plan_of(_planetary(epsilon=0.5))
+    by_links = solve_pose(plan)
+    rolled = solve_poses(plan, np.array([[0.0], [1e-3]]))
+    for link in ("1", "2", "C"):
+        assert by_links.links[link].omega == pytest.approx(rolled.qd[link][0, 2], abs=1e-9)
+        assert by_links.links[link].epsilon == pytest.approx(rolled.qdd[link][0, 2], abs=1e-9)
+
+
 def test_a_pose_that_cannot_be_assembled_is_named():
     # crank 0.1, coupler √0.05 ≈ 0.224, rocker √0.02 ≈ 0.141 on a 0.4 base: turned by half a
     # turn the crank pin is 0.5 from D, beyond the reach 0.365 of the dyad

@@ -772,8 +772,8 @@ def solve_poses(
     SingularPoseError
         A group is at a dead centre at some input.
     MechanismError
-        Inputs away from the sketch for a mechanism with higher pairs (their
-        replacement is instantaneous).
+        Inputs away from the sketch for a mechanism with a cam (its replacement
+        is instantaneous); gear meshes roll (``plan.rolling``).
     """
     inputs = np.atleast_2d(np.asarray(inputs, dtype=float))
     if inputs.shape[1] != len(plan.drivers):

@@ -652,7 +652,8 @@ def _dyad_frames(
     return True
 
 
-_CHUNK = 64  # poses solved together by a batched Newton, from a predictor
+_CHUNK_SPAN = 0.3  # input span (rad, or fraction of the sketch) of one batched Newton chunk
+_CHUNK_MAX = 1024
 
 
 def _sequential(
@@ -683,8 +684,12 @@ def _follow(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, start
         out[link][0] = first[link]
     k = 1
     tol = 1e-13 * plan.length
+    scale = np.array([1.0 if d.kind == "R" else plan.length for d in plan.drivers])
+    steps = np.max(np.abs(np.diff(inputs, axis=0)) / scale, axis=1) if n > 1 else np.zeros(1)
+    typical = float(np.median(steps)) if len(steps) else 0.0
+    size = int(np.clip(_CHUNK_SPAN / typical, 8, _CHUNK_MAX)) if typical > 0 else 8
     while k < n:
-        stop = min(n, k + _CHUNK)
+        stop = min(n, k + size)
         idx = np.arange(k, stop)
         last = {link: out[link][k - 1] for link in links}
         slope = (
@@ -739,17 +744,16 @@ def _needs_continuation(plan: SolvePlan) -> bool:
 def _densified(plan: SolvePlan, inputs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Inputs with intermediate rows from the sketch on, so Newton never jumps far."""
     scale = np.array([1.0 if d.kind == "R" else plan.length for d in plan.drivers])
-    rows: list[np.ndarray] = []
-    picks: list[int] = []
-    previous = np.zeros(inputs.shape[1])
-    for row in inputs:
-        jump = float(np.max(np.abs(row - previous) / scale)) if len(scale) else 0.0
-        pieces = max(1, math.ceil(jump / _CONTINUATION_STEP))
-        for k in range(1, pieces + 1):
-            rows.append(previous + (row - previous) * (k / pieces))
-        picks.append(len(rows) - 1)
-        previous = row
-    return np.array(rows), np.array(picks, dtype=int)
+    previous = np.vstack([np.zeros((1, inputs.shape[1])), inputs[:-1]])
+    jump = np.max(np.abs(inputs - previous) / scale, axis=1) if len(scale) else np.zeros(0)
+    pieces = np.maximum(1, np.ceil(jump / _CONTINUATION_STEP)).astype(int)
+    picks = np.cumsum(pieces) - 1
+    # row i's pieces: previous_i + (input_i − previous_i)·k/pieces_i, k = 1 … pieces_i
+    owner = np.repeat(np.arange(len(inputs)), pieces)
+    k = np.arange(len(owner)) - np.repeat(picks - pieces + 1, pieces) + 1
+    fraction = (k / pieces[owner])[:, None]
+    rows = previous[owner] + (inputs[owner] - previous[owner]) * fraction
+    return rows, picks
 
 
 def solve_poses(
@@ -821,8 +825,7 @@ def _solve_poses(
             }
             _follow(step, plan, q, inputs, start)
         _, jac, known_v, _ = _system(step, q, qd, n)
-        s = np.linalg.svd(_scaled(jac, plan.length), compute_uv=False)
-        ratio = s[:, -1] / s[:, 0]
+        ratio = _conditioning(_scaled(jac, plan.length))
         if step.group is not None and (ratio <= _SINGULAR).any():
             k = int(np.argmax(ratio <= _SINGULAR))
             raise SingularPoseError(
@@ -845,6 +848,29 @@ def _solve_poses(
     for table in (q, qd, qdd):
         table.setdefault(ground, zero)
     return Motion(inputs, q, qd, qdd, MappingProxyType(frames))
+
+
+def _conditioning(jac: np.ndarray) -> np.ndarray:
+    """σ_min/σ_max of each pose's Jacobian (N, m, k).
+
+    For square Jacobians ``1/(‖J‖_F·‖J⁻¹‖_F)`` is a lower bound of it, within a
+    factor m: only the poses it flags get a singular value decomposition, which
+    costs several times an inverse.
+    """
+    ratio = np.ones(jac.shape[0])
+    suspect = np.ones(jac.shape[0], dtype=bool)
+    if jac.shape[1] == jac.shape[2]:
+        try:
+            inv = np.linalg.inv(jac)
+        except np.linalg.LinAlgError:  # some pose exactly singular
+            inv = None
+        if inv is not None:
+            bound = 1.0 / (np.linalg.norm(jac, axis=(1, 2)) * np.linalg.norm(inv, axis=(1, 2)))
+            suspect = ~(bound > _SINGULAR)  # NaN (an overflowed inverse) is suspect too
+    if suspect.any():
+        s = np.linalg.svd(jac[suspect], compute_uv=False)
+        ratio[suspect] = s[:, -1] / s[:, 0]
+    return ratio
 
 
 def _least_squares(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:

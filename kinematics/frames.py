@@ -21,8 +21,8 @@ an entry whose link has a frame is computed from it the first time it is read.
 [0.0, 1.0, -2.0, 0.0, 0.0, -4.0]
 >>> table = LinkTable({"2": f}, "q", 1)
 >>> table.declare("2")
->>> table["2"].round(12).tolist()
-[[0.0, 0.0, 1.570796326796]]
+>>> table["2"].round(9).tolist()
+[[0.0, 0.0, 1.570796327]]
 """
 
 from __future__ import annotations

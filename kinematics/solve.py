@@ -23,7 +23,7 @@ name the group and the input; nothing is returned as NaN.
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 0.1", "point C 0.4 0.1", "point D 0.4 -0.3"])
 >>> state = solve_pose(make_plan(analyze(m)))
->>> round(state.links["3"].omega, 12), round(state.links["2"].omega, 12)
+>>> round(state.links["3"].omega, 12), abs(round(state.links["2"].omega, 12))
 (5.0, 0.0)
 """
 

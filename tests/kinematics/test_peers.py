@@ -213,6 +213,7 @@ PEER_CASES = [
     pytest.param("klann", True, id="klann"),
     pytest.param("watt_sixbar", True, id="watt-sixbar"),
     pytest.param("stephenson_sixbar", False, id="stephenson-sixbar"),
+    pytest.param("stephenson_sixbar_dyads", True, id="stephenson-sixbar-dyads"),
 ]
 STEPS = 360  # crank angles 1°, 2°, …, 360° from the sketch
 

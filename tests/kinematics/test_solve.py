@@ -314,3 +314,32 @@ def test_batched_newton_follows_the_same_branch_as_pose_by_pose():
         previous = {link: value[0] for link, value in one.q.items()}
         for link in batched.q:
             np.testing.assert_allclose(batched.q[link][k], one.q[link][0], atol=1e-9)
+
+
+def test_stephenson_triad_retraces_the_same_chain_driven_as_two_dyads():
+    # One Stephenson chain, two drivers: driven at link 4 it is two RRR dyads
+    # (closed form); driven at link 1 it is a class III triad (Newton). Feeding
+    # the triad the crank angles θ1(φ) the dyads give must bring back φ, and the
+    # speed ratios must be the reciprocal ones. Link 1 is a rocker: where θ1
+    # turns back the triad is at a dead centre, so only the stretch from the
+    # sketch to just before the first turn is retraced.
+    text = (FIXTURES / "stephenson_sixbar_dyads.edges").read_text()
+    dyads = plan_of(text)
+    phi = np.linspace(0.0, 2 * math.pi, 721)
+    by_dyads = solve_poses(dyads, phi[:, None])
+    w1 = by_dyads.qd["1"][:, 2]
+    turn = int(np.argmax(np.sign(w1) != np.sign(w1[0])))
+    assert turn > 20
+    phi = phi[: turn - 5]
+    by_dyads = solve_poses(dyads, phi[:, None])
+    triad_text = text.replace("driver 4 omega=10", "driver 1 omega=1")
+    triad = plan_of(triad_text)
+    assert [s.group.assur_class for s in triad.steps] == [3]
+    theta1 = by_dyads.q["1"][:, 2]
+    by_triad = solve_poses(triad, theta1[:, None])
+    w1 = by_dyads.qd["1"][:, 2]
+    for link in ("2", "3", "4", "5"):
+        np.testing.assert_allclose(by_triad.q[link], by_dyads.q[link], atol=1e-10)
+        np.testing.assert_allclose(
+            by_triad.qd[link][:, 2], by_dyads.qd[link][:, 2] / w1, rtol=1e-8, atol=1e-9
+        )

@@ -11,10 +11,12 @@ import json
 import math
 import sys
 from collections.abc import Sequence
+from pathlib import Path
 
 import numpy as np
 
 from kinematics.exact import forces_exact, solve_exact
+from kinematics.explain import explain_forces, explain_kinematics
 from kinematics.forces import solve_forces
 from kinematics.gears import (
     balancing_moment,
@@ -35,6 +37,7 @@ from kinematics.sweep import sweep
 
 from .edgelist import read_edgelist
 from .errors import MechanismError, MobilityError
+from .explain import FORMATS, LANGUAGES, explain_structure
 from .report import (
     all_driver_choices,
     analyze,
@@ -67,6 +70,12 @@ def _parser() -> argparse.ArgumentParser:
         help="list the groups for every admissible driver choice",
     )
     classify.add_argument("--json", action="store_true", help="print one JSON object")
+    classify.add_argument(
+        "--plot",
+        metavar="OUT",
+        help="draw the kinematic graph (and the mechanism, when the file has coordinates) "
+        "(.png, .svg, .pdf)",
+    )
     kin = sub.add_parser(
         "kinematics",
         help="positions, velocities and accelerations at the sketch pose, group by group",
@@ -99,6 +108,11 @@ def _parser() -> argparse.ArgumentParser:
         action="store_true",
         help="for an over-constrained mechanism, give the minimum-norm reactions",
     )
+    fo.add_argument(
+        "--plot",
+        metavar="OUT",
+        help="draw the mechanism and the force polygon of each group and driver (.png, .svg, .pdf)",
+    )
     ge = sub.add_parser(
         "gears", help="gear train: meshes, carriers, DOF, exact speed ratios, balancing moment"
     )
@@ -114,14 +128,47 @@ def _parser() -> argparse.ArgumentParser:
     sw.add_argument("file", help="edge-list file with point coordinates and driver motion")
     sw.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
     sw.add_argument("--csv", metavar="OUT", help="write every pose to this CSV file")
+    sw.add_argument(
+        "--plot",
+        metavar="OUT",
+        help="plot paths, ω, ε, |v|, |a|, transmission angle, balancing (.png, .svg, .pdf)",
+    )
+    an = sub.add_parser(
+        "animate", help="an animation of the mechanism over one turn of the driver(s)"
+    )
+    an.add_argument("file", help="edge-list file with point coordinates")
+    an.add_argument("out", metavar="OUT", help="the animation: .gif (or .mp4 with ffmpeg)")
+    an.add_argument("--steps", type=int, default=36, help="frames per turn (default 36)")
+    an.add_argument("--fps", type=float, default=12.0, help="frames per second (default 12)")
+    for command in (classify, kin, fo):
+        _add_explain(command)
     return parser
+
+
+def _add_explain(command: argparse.ArgumentParser) -> None:
+    """``--explain [FORMAT]`` and ``--lang``: the worked solution instead of the plain answer."""
+    command.add_argument(
+        "--explain",
+        nargs="?",
+        const="text",
+        choices=FORMATS,
+        metavar="FORMAT",
+        help="print the worked solution, step by step as the textbook writes it: "
+        "text (default), markdown or latex",
+    )
+    command.add_argument(
+        "--lang", choices=LANGUAGES, default="en", help="language of --explain (default en)"
+    )
 
 
 def _classify(args: argparse.Namespace) -> int:
     try:
+        _check_plot(args.plot)
         mechanism = read_edgelist(args.file)
         report = analyze(mechanism, args.driver)
         choices = all_driver_choices(report) if args.all_drivers else ()
+        if args.plot:
+            _save_plot(args.plot, lambda figures: _structure_figure(figures, report))
     except MobilityError as exc:
         if args.json:
             _print_json(mobility_error_dict(exc))
@@ -132,21 +179,58 @@ def _classify(args: argparse.Namespace) -> int:
         return _failed(exc, args.json)
     if args.json:
         _print_json(report_to_dict(report, choices))
+    elif args.explain:
+        sys.stdout.write(explain_structure(report, args.lang, args.explain))
     else:
         sys.stdout.write(format_report(report, choices))
     return 0
 
 
 def _plot(report, plan, state, path: str) -> None:
-    """Save the kinematics sheet; matplotlib is the optional ``plot`` extra, imported here."""
+    """Save the kinematics sheet."""
+    _save_plot(path, lambda figures: figures.kinematics_sheet(report, plan, state))
+
+
+_PLOT_FORMATS = (".png", ".svg", ".pdf")
+
+
+def _check_plot(path: str | None) -> None:
+    """Refuse a --plot file of an unsupported format before any work is done."""
+    if path is not None and Path(path).suffix.lower() not in _PLOT_FORMATS:
+        raise MechanismError(
+            f"cannot plot to {path}: unsupported figure format "
+            f"{Path(path).suffix or '(none)'!r}, use .png, .svg or .pdf"
+        )
+
+
+def _save_plot(path: str, draw) -> None:
+    """Save the figure ``draw(kinematics.figures)`` makes.
+
+    matplotlib is the optional ``plot`` extra, imported here.
+    """
+    _check_plot(path)
     try:
-        from kinematics.figures import kinematics_sheet, save
+        from kinematics import figures
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise MechanismError("--plot needs matplotlib: pip install 'assur[plot]'") from exc
     try:
-        save(kinematics_sheet(report, plan, state), path)
+        figures.save(draw(figures), path)
     except ValueError as exc:
         raise MechanismError(str(exc)) from exc
+    except OSError as exc:
+        raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
+
+
+def _structure_figure(figures, report):
+    """The kinematic graph, with the mechanism at its sketch pose when the file has one."""
+    plan = state = None
+    if report.mechanism.points:
+        try:
+            plan = make_plan(report)
+            state = solve_pose(plan)
+        except MechanismError:  # an incomplete sketch: the graph alone
+            plan = state = None
+    return figures.structure_sheet(report, plan, state)
 
 
 def _print_json(data: object) -> None:
@@ -187,6 +271,9 @@ def _kinematics(args: argparse.Namespace) -> int:
         return 2
     if args.json:
         _print_json(state_to_dict(state))
+        return 0
+    if args.explain:
+        sys.stdout.write(explain_kinematics(report, plan, state, args.lang, args.explain))
         return 0
     m = report.mechanism
     out = _title(m)
@@ -241,7 +328,12 @@ def _print_exact(report, plan, as_json: bool) -> int:
 
 def _forces(args: argparse.Namespace) -> int:
     try:
+        _check_plot(args.plot)
         report = analyze(read_edgelist(args.file))
+        if args.plot:
+            plan = make_plan(report)
+            numeric = solve_forces(plan, minimum_norm=args.minimum_norm)
+            _save_plot(args.plot, lambda figures: figures.forces_sheet(report, plan, numeric))
         if args.exact:
             return _print_exact_forces(report, make_plan(report), args.json)
         result = solve_forces(make_plan(report), minimum_norm=args.minimum_norm)
@@ -249,6 +341,10 @@ def _forces(args: argparse.Namespace) -> int:
         return _failed(exc, args.json)
     if args.json:
         _print_json(forces_to_dict(result))
+        return 0
+    if args.explain:
+        plan = make_plan(report)
+        sys.stdout.write(explain_forces(report, plan, result, args.lang, args.explain))
         return 0
     m = report.mechanism
     out = _title(m)
@@ -414,7 +510,11 @@ def _sweep(args: argparse.Namespace) -> int:
         sys.stderr.write("error: --steps must be at least 1\n")
         return 2
     try:
-        result = sweep(make_plan(analyze(read_edgelist(args.file))), steps=args.steps)
+        _check_plot(args.plot)
+        plan = make_plan(analyze(read_edgelist(args.file)))
+        result = sweep(plan, steps=args.steps)
+        if args.plot:
+            _save_plot(args.plot, lambda figures: figures.sweep_figure(result, plan))
     except MechanismError as exc:
         sys.stderr.write(f"error: {exc}\n")
         return 1
@@ -440,6 +540,28 @@ def _sweep(args: argparse.Namespace) -> int:
     return 0
 
 
+def _animate(args: argparse.Namespace) -> int:
+    if args.steps < 1 or not args.fps > 0:
+        sys.stderr.write("error: --steps must be at least 1 and --fps positive\n")
+        return 2
+    try:
+        try:
+            from kinematics.animation import animate, turn_inputs
+        except ImportError as exc:  # pragma: no cover - depends on the environment
+            raise MechanismError("animate needs matplotlib: pip install 'assur[plot]'") from exc
+        report = analyze(read_edgelist(args.file))
+        plan = make_plan(report)
+        animate(report, plan, turn_inputs(plan, args.steps), args.out, fps=args.fps)
+    except MechanismError as exc:
+        sys.stderr.write(f"error: {exc}\n")
+        return 1
+    except OSError as exc:
+        sys.stderr.write(f"error: cannot write {args.out}: {exc.strerror or exc}\n")
+        return 1
+    sys.stdout.write(f"wrote {args.out}: {args.steps} frames at {args.fps:g} frames/s\n")
+    return 0
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code."""
     parser = _parser()
@@ -447,6 +569,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help
         return int(exc.code or 0)
+    if getattr(args, "explain", None) and (args.json or getattr(args, "exact", False)):
+        sys.stderr.write("error: --explain cannot be combined with --json or --exact\n")
+        return 2
     if args.command == "classify":
         return _classify(args)
     if args.command == "kinematics":
@@ -457,6 +582,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _forces(args)
     if args.command == "gears":
         return _gears(args)
+    if args.command == "animate":
+        return _animate(args)
     parser.error(f"unknown command {args.command}")
     return 2
 

@@ -36,6 +36,7 @@ from .constraints import (
 )
 from .model import Mechanism, PairKind
 from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank, null_space
+from .regularity import nearby_pose
 
 __all__ = ["Mobility", "PassiveMotion", "Redundancy", "counts", "mobility", "mobility_analysis"]
 
@@ -178,6 +179,16 @@ def mobility_analysis(
     geo_passive: dict[str, int] = {}
     if geometric is not None and realization is not None:
         extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
+        moved = nearby_pose(system, realization) if extra else None
+        if moved is not None and (regular := geometric_rank(system, moved)).rank > geometric.rank:
+            geometric, realization = regular, moved
+            extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
+            notes = (
+                *notes,
+                "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
+                "a linkage drawn folded flat): the geometric counts are those of a regular "
+                "pose reached from it by a small motion",
+            )
         redundant.extend(
             Redundancy(pid, mechanism.pair(pid).label, k, "geometric", mechanism.pair(pid).line_no)
             for pid, k in sorted(extra.items())

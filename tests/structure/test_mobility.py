@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import pytest
 
-from structure.edgelist import parse_edgelist
+from structure.edgelist import parse_edgelist, read_edgelist
 from structure.errors import MobilityError
 from structure.mobility import mobility
 from structure.report import analyze
+
+from ..conftest import FIXTURES
 
 
 def mech(text: str):
@@ -155,3 +157,32 @@ def test_drivers_are_chosen_when_none_named():
     report = analyze(mech("0 1 R\n1 2 R\n2 3 R\n3 4 R\n4 0 R"))
     assert report.drivers_chosen
     assert report.drivers == ("1", "4")
+
+
+FLAT_PARALLELOGRAM = [
+    "driver 1",
+    "0 1 R A",
+    "1 2 R B",
+    "2 3 R C",
+    "3 0 R D",
+    "point A 0 0",
+    "point B 1 0",
+    "point C 3 0",
+    "point D 2 0",
+]
+
+
+def test_a_sketch_at_a_singular_pose_is_not_taken_for_redundancy():
+    # AB = CD = 1, BC = AD = 2 drawn folded flat: at that pose the pairs'
+    # Jacobian loses a rank (8 rows, rank 7), yet the linkage moves with
+    # W = 3·3 − 2·4 = 1 and no redundancy; a nearby regular pose shows it.
+    mob = mobility(parse_edgelist(FLAT_PARALLELOGRAM))
+    assert (mob.r, mob.W) == (0, 1)
+    assert any("singular pose" in note for note in mob.notes)
+
+
+def test_a_true_geometric_redundancy_survives_the_regularity_check():
+    # The third parallel crank stays redundant at every pose of the parallelogram.
+    mob = mobility(read_edgelist(FIXTURES / "parallelogram_redundant.edges"))
+    assert (mob.r, mob.W) == (1, 1)
+    assert not any("singular pose" in note for note in mob.notes)

@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -58,7 +58,7 @@ from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
 from .equations import rotate
-from .forces import ForceSolution
+from .forces import ForceSolution, Reaction
 from .plan import DriverStep, GroupStep, SolvePlan
 from .solve import KinematicState, solve_pose
 
@@ -120,6 +120,7 @@ PHRASES: dict[str, dict[str, str]] = {
         "link_value": "link {link}: {w} = {wv} rad/s{ws}, {e} = {ev} rad/s²{es}",
         # forces
         "f_title": "Forces on {name} (kinetostatics at the sketch pose)",
+        "f_title_at": "Forces on {name} (kinetostatics at {pose} from the sketch pose)",
         "f_conventions": (
             "Units N, m; moments positive counter-clockwise. R_ij is the force link i exerts on "
             "link j. The groups are detached from the farthest; each group's outer reactions "
@@ -237,6 +238,7 @@ PHRASES: dict[str, dict[str, str]] = {
         "link_value": "khâu {link}: {w} = {wv} rad/s{ws}, {e} = {ev} rad/s²{es}",
         # forces
         "f_title": "Phân tích lực cơ cấu: {name} (tại vị trí đang xét)",
+        "f_title_at": "Phân tích lực cơ cấu: {name} (tại vị trí {pose} so với hình vẽ)",
         "f_conventions": (
             "Đơn vị N, m; mômen dương khi ngược chiều kim đồng hồ. R_ij là áp lực khớp động "
             "do khâu i tác dụng lên khâu j. Tách nhóm tĩnh định bắt đầu từ nhóm xa khâu dẫn nhất, "
@@ -318,6 +320,7 @@ POWER_EQUATION = Math(
 _UNITS = {
     "m/s": r"\ \mathrm{m/s}",
     "m/s²": r"\ \mathrm{m/s^2}",
+    "rad": r"\ \mathrm{rad}",
     "rad/s": r"\ \mathrm{rad/s}",
     "rad/s²": r"\ \mathrm{rad/s^2}",
     "N": r"\ \mathrm{N}",
@@ -404,6 +407,37 @@ def _sum(link: str = "") -> Math:
     return Math("ΣP", r"\sum \vec{P}")
 
 
+def _with_numbers(
+    template: str, symbols: Sequence[Math], values: Sequence[Math | float], result: Math
+) -> Math:
+    """A formula in its symbols, then in their values, then its value.
+
+    >>> _with_numbers("{0}·{1}", [_w("1"), _l("A", "B")], [20.0, 0.1], _q(2.0, "m/s")).text
+    'ω1·l_AB = 20·0.1 = 2 m/s'
+    """
+
+    def filled(items: Sequence[Math | float]) -> Math:
+        return _f(template, **{str(k): x for k, x in enumerate(items)})
+
+    return _f("{s} = {n} = {r}", s=filled(symbols), n=filled(values), r=result)
+
+
+def _times_length(
+    rate: Math, value: float, a: str, b: str, length: float, unit: str, square: bool = False
+) -> Math:
+    """A rate's size times the length ``ab``: ``ω1·l_AB = 20·0.1 = 2 m/s``; ``ω3²·l_CD = …``."""
+    two = "²" if square else ""
+    size = value * value if square else abs(value)
+    result = _q(size * length, unit)
+    return _with_numbers("{0}" + two + "·{1}", [rate, _l(a, b)], [abs(value), length], result)
+
+
+def _power(sym: Math, speed_sym: Math, value: float, speed: float) -> Math:
+    """The power of a load or a balancing moment: ``M_cb·ω1 = 50·10 = 500 W``."""
+    speeds = [_paren(value), _paren(speed)]
+    return _with_numbers("{0}·{1}", [sym, speed_sym], speeds, _q(value * speed, "W"))
+
+
 def angle_of(v: np.ndarray) -> float:
     """Direction of a vector, degrees from the x axis counter-clockwise, in (−180, 180].
 
@@ -435,6 +469,14 @@ def _j(v: np.ndarray) -> np.ndarray:
 
 
 # ============================================================================ motion
+@dataclass(frozen=True)
+class _At:
+    """A point as the explanation writes it, and where it is at the pose."""
+
+    name: str
+    xy: np.ndarray
+
+
 @dataclass
 class _Ctx:
     """The mechanism, the motion at the pose, and the lookups the notation needs."""
@@ -447,6 +489,7 @@ class _Ctx:
     pivot: dict[str, str] = field(init=False)  # link -> its pivot on the ground
     slide: dict[str, int] = field(init=False)  # link -> its P pair with the ground
     solved_in: dict[str, str] = field(init=False)  # link -> label of the step that solved it
+    slide_on: dict[int, str] = field(init=False)  # P pair -> the link its reaction acts on
 
     def __post_init__(self) -> None:
         self.m = self.plan.mechanism
@@ -466,9 +509,13 @@ class _Ctx:
                     if x != self.ground:
                         self.pivot.setdefault(x, h.point)
         self.solved_in = {d.link: f"I({d.link})" for d in self.plan.drivers}
+        self.slide_on = {}
         for step in self.plan.steps:
             for x in step.links:
                 self.solved_in[x] = step.label
+            for eq in step.equations:
+                if eq.kind == "SLIDE":
+                    self.slide_on[eq.pair] = eq.b  # the reaction is (eq.a, eq.b): see _reactions
 
     def rates(self, link: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``q, q̇, q̈`` of a link (zeros for the ground)."""
@@ -497,6 +544,27 @@ class _Ctx:
         r = p - q[:2]
         jr = _j(r)
         return qd[:2] + qd[2] * jr, qdd[:2] + qdd[2] * jr - qd[2] ** 2 * r
+
+    def pin(self, name: str) -> _At:
+        """A pin (or another named point) where the solve put it."""
+        return _At(name, np.asarray(self.state.points[name].position))
+
+    def slide_point(self, name: str, link: str) -> _At:
+        """The point ``name`` of ``link``: where a slide's reaction on ``link`` acts.
+
+        Once the slide has moved from the sketch, its point on ``link`` has parted from
+        the one named ``name``; it is written ``E3`` (the point of link 3 at E) then.
+        """
+        xy = self.at(link, name)[0]
+        named = self.state.points.get(name)
+        if named is None or _norm(np.asarray(named.position) - xy) <= 1e-9 * (1.0 + _norm(xy)):
+            return _At(name, xy)
+        return _At(_label(name, link), xy)
+
+    def slide_at(self, pair_id: int) -> _At:
+        """Where the reaction of slide ``pair_id`` acts (see :meth:`slide_point`)."""
+        pair = self.m.pair(pair_id)
+        return self.slide_point(pair.point or "?", self.slide_on.get(pair_id, pair.b))
 
     def dist(self, link: str, a: str, b: str) -> float:
         return _norm(self.at(link, a)[0] - self.at(link, b)[0])
@@ -562,39 +630,19 @@ def _known(
         length = _norm(where - ctx.at(k, pivot)[0])
         w, e = ctx.omega(k), ctx.epsilon(k)
         if order == 1:
-            return [
-                _f(
-                    "{p}, {w}·{l} = {wv}·{lv} = {v}",
-                    p=_perp(pivot, x),
-                    w=_w(k),
-                    l=_l(pivot, x),
-                    wv=abs(w),
-                    lv=length,
-                    v=_q(abs(w) * length, "m/s"),
-                )
-            ]
+            speed = _times_length(_w(k), w, pivot, x, length, "m/s")
+            return [_f("{p}, {t}", p=_perp(pivot, x), t=speed)]
         sub = x + pivot
+        normal = _times_length(_w(k), w, pivot, x, length, "m/s²", square=True)
+        tangential = _times_length(_e(k), e, pivot, x, length, "m/s²")
         return [
-            _f(
-                "{an} ({to}) = {w}²·{l} = {wv}²·{lv} = {a}",
-                an=_mag("a", sub, "n"),
-                to=_to(x, pivot),
-                w=_w(k),
-                l=_l(pivot, x),
-                wv=abs(w),
-                lv=length,
-                a=_q(w * w * length, "m/s²"),
-            ),
+            _f("{an} ({to}) = {n}", an=_mag("a", sub, "n"), to=_to(x, pivot), n=normal),
             "; ",
             _f(
-                "{at} ({p}) = {e}·{l} = {ev}·{lv} = {a} ⇒ |{lab}| = {size}",
+                "{at} ({p}) = {t} ⇒ |{lab}| = {size}",
                 at=_mag("a", sub, "τ"),
                 p=_perp(pivot, x),
-                e=_e(k),
-                l=_l(pivot, x),
-                ev=abs(e),
-                lv=length,
-                a=_q(abs(e) * length, "m/s²"),
+                t=tangential,
                 lab=_vec("a", label),
                 size=_q(_norm(a), "m/s²"),
             ),
@@ -747,16 +795,8 @@ def _equation(ctx: _Ctx, d: _Dyad, letter: str) -> tuple[Math, list[list]]:
             an, at = _vec("a", sub, "n"), _vec("a", sub, "τ")
             chains.append(_f("{b} + {n} + {t}", b=base, n=an, t=at))
             w, length = ctx.omega(side.link), _arm(ctx, d, side)
-            normal = _f(
-                "{to}, {w}²·{l} = {wv}²·{lv} = {a}",
-                to=_to(d.x, side.base),
-                w=_w(side.link),
-                l=_l(side.base, d.x),
-                wv=abs(w),
-                lv=length,
-                a=_q(w * w * length, "m/s²"),
-            )
-            items.append([an, ": ", normal])
+            normal = _times_length(_w(side.link), w, side.base, d.x, length, "m/s²", square=True)
+            items.append([an, ": ", _f("{to}, {n}", to=_to(d.x, side.base), n=normal)])
             items.append([at, ": ", _f("{p}, ?", p=_perp(side.base, d.x))])
             continue
         base = _vec(letter, _label(d.x, side.guide_link))
@@ -782,14 +822,8 @@ def _coriolis(ctx: _Ctx, d: _Dyad, side: _Side) -> tuple[float, np.ndarray, np.n
 
 def _coriolis_text(ctx: _Ctx, d: _Dyad, side: _Side) -> list:
     wg, vrel, ak = _coriolis(ctx, d, side)
-    value = _f(
-        "2·{w}·{v} = 2·{wv}·{vv} = {a}",
-        w=_w(side.guide_link),
-        v=_mag("v", _rel_sub(d, side)),
-        wv=abs(wg),
-        vv=_norm(vrel),
-        a=_q(_norm(ak), "m/s²"),
-    )
+    symbols = [_w(side.guide_link), _mag("v", _rel_sub(d, side))]
+    value = _with_numbers("2·{0}·{1}", symbols, [abs(wg), _norm(vrel)], _q(_norm(ak), "m/s²"))
     if _norm(ak) <= 1e-9:
         return [value]
     turned = ctx.doc.say(
@@ -820,21 +854,12 @@ def _solved(ctx: _Ctx, d: _Dyad, order: int) -> list[list]:
             length = _arm(ctx, d, side)
             sym = _mag(letter, _rel_sub(d, side), "" if order == 1 else "τ")
             value = abs(rate) * length
-            out.append(
-                [
-                    _f(
-                        "{s} = {v} ⇒ {r} = {s}/{l} = {vv}/{lv} = {rv}",
-                        s=sym,
-                        v=_q(value, unit),
-                        r=_w(link) if order == 1 else _e(link),
-                        l=_l(side.base, d.x),
-                        vv=value,
-                        lv=length,
-                        rv=_q(rate, rate_unit),
-                    ),
-                    ctx.sense(rate),
-                ]
+            ratio = _with_numbers(
+                "{0}/{1}", [sym, _l(side.base, d.x)], [value, length], _q(rate, rate_unit)
             )
+            r_sym = _w(link) if order == 1 else _e(link)
+            equation = _f("{s} = {v} ⇒ {r} = {q}", s=sym, v=_q(value, unit), r=r_sym, q=ratio)
+            out.append([equation, ctx.sense(rate)])
             continue
         u = ctx.guide(side.pair)[0]
         own = ctx.motion(link, d.where)[order - 1]
@@ -895,41 +920,16 @@ def _group_points(ctx: _Ctx, links: Sequence[str], pin_of: Mapping[str, str]) ->
             link = ps.link
             w, e = ctx.omega(link), ctx.epsilon(link)
             length = ctx.dist(link, x, name)
-            sub = name + x
-            rows.append(
-                [
-                    _f(
-                        "{v} = {vx} + {vr}: {p}, {w}·{l} = {wv}·{lv} = {r}",
-                        v=_vec("v", name),
-                        vx=_vec("v", x),
-                        vr=_vec("v", sub),
-                        p=_perp(x, name),
-                        w=_w(link),
-                        l=_l(x, name),
-                        wv=abs(w),
-                        lv=length,
-                        r=_q(abs(w) * length, "m/s"),
-                    )
-                ]
-            )
-            rows.append(
-                [
-                    _f(
-                        "{a} = {ax} + {an} + {at}: {n} = {w}²·{l} = {nv}, {t} = {e}·{l} = {tv}",
-                        a=_vec("a", name),
-                        ax=_vec("a", x),
-                        an=_vec("a", sub, "n"),
-                        at=_vec("a", sub, "τ"),
-                        n=_mag("a", sub, "n"),
-                        w=_w(link),
-                        l=_l(x, name),
-                        nv=_q(w * w * length, "m/s²"),
-                        t=_mag("a", sub, "τ"),
-                        e=_e(link),
-                        tv=_q(abs(e) * length, "m/s²"),
-                    )
-                ]
-            )
+            sub, l_xm = name + x, _l(x, name)
+            speed = _times_length(_w(link), w, x, name, length, "m/s")
+            v_sum = _relative("v", name, x, sub, [""])
+            rows.append([_f("{s}: {p}, {t}", s=v_sum, p=_perp(x, name), t=speed)])
+            a_n, a_t = _mag("a", sub, "n"), _mag("a", sub, "τ")
+            v_n, v_t = _q(w * w * length, "m/s²"), _q(abs(e) * length, "m/s²")
+            normal = _f("{n} = {w}²·{l} = {v}", n=a_n, w=_w(link), l=l_xm, v=v_n)
+            tangent = _f("{t} = {e}·{l} = {v}", t=a_t, e=_e(link), l=l_xm, v=v_t)
+            a_sum = _relative("a", name, x, sub, ["n", "τ"])
+            rows.append([_f("{s}: {n}, {t}", s=a_sum, n=normal, t=tangent)])
         v, a = np.asarray(ps.velocity), np.asarray(ps.acceleration)
         rows.append(
             doc.say(
@@ -946,6 +946,12 @@ def _group_points(ctx: _Ctx, links: Sequence[str], pin_of: Mapping[str, str]) ->
         doc.para(doc.word("points"))
         for row in rows:
             doc.item(*row)
+
+
+def _relative(letter: str, point: str, base: str, sub: str, sups: Sequence[str]) -> Math:
+    """``v_M = v_X + v_MX``, ``a_M = a_X + a^n_MX + a^τ_MX``: a point from another of its link."""
+    terms = [_vec(letter, base), *(_vec(letter, sub, sup) for sup in sups)]
+    return _f("{p} = {t}", p=_vec(letter, point), t=math_join(terms, " + "))
 
 
 def _link_values(ctx: _Ctx, links: Sequence[str]) -> None:
@@ -1158,15 +1164,9 @@ def _applied_loads(ctx: _Ctx, velocities: _Ctx) -> list[_Load]:
 
     def force(label: Math, link: str, point: str, f: np.ndarray, key: str) -> None:
         v = velocities.at(link, point)[1]
+        dot = math_join([_f("{f}·{v}", f=_paren(f[i]), v=_paren(v[i])) for i in (0, 1)], " + ")
         power = _f(
-            "{s}·{v} = {fx}·{vx} + {fy}·{vy} = {p}",
-            s=label,
-            v=_vec("v", point),
-            fx=_paren(f[0]),
-            vx=_paren(v[0]),
-            fy=_paren(f[1]),
-            vy=_paren(v[1]),
-            p=_q(float(f @ v), "W"),
+            "{s}·{v} = {d} = {p}", s=label, v=_vec("v", point), d=dot, p=_q(float(f @ v), "W")
         )
         out.append(_Load(label, link, f, ctx.at(link, point)[0], 0.0, (power, float(f @ v))))
         fx, fy = number(f[0], 1e-6), number(f[1], 1e-6)
@@ -1174,14 +1174,7 @@ def _applied_loads(ctx: _Ctx, velocities: _Ctx) -> list[_Load]:
 
     def moment(label: Math, link: str, value: float, key: str) -> None:
         w = velocities.omega(link)
-        power = _f(
-            "{s}·{w} = {m}·{wv} = {p}",
-            s=label,
-            w=_w(link),
-            m=_paren(value),
-            wv=_paren(w),
-            p=_q(value * w, "W"),
-        )
+        power = _power(label, _w(link), value, w)
         out.append(_Load(label, link, np.zeros(2), np.zeros(2), value, (power, value * w)))
         doc.item(*doc.say(key, sym=label, link=link, value=number(value, 1e-6)))
 
@@ -1204,6 +1197,14 @@ def _applied_loads(ctx: _Ctx, velocities: _Ctx) -> list[_Load]:
     return out
 
 
+def _commas(items: Iterable[list]) -> list:
+    """The items (each a list of segments) one after the other, separated by ``, ``."""
+    out: list = []
+    for item in items:
+        out += [", ", *item] if out else item
+    return out
+
+
 def _rsym(source: str, target: str, sup: str = "") -> Math:
     """``R_12``: the force link 1 exerts on link 2 (a magnitude or component)."""
     return _mag("R", _sub2(source, target), sup)
@@ -1215,22 +1216,29 @@ def _rvec(source: str, target: str, sup: str = "") -> Math:
 
 def _find(
     solution: ForceSolution, a: str, b: str, point: str | None, kind: str
-) -> tuple[np.ndarray, float] | None:
-    """The force and couple that ``a`` exerts on ``b`` at ``point`` in the solution."""
+) -> tuple[np.ndarray, float, Reaction] | None:
+    """The force and couple that ``a`` exerts on ``b`` at ``point``, and the reaction."""
     for r in solution.reactions:
         if r.kind != kind or set(r.links) != {a, b}:
             continue
         if point and r.point and r.point != point:
             continue
         if r.links == (a, b):
-            return np.asarray(r.force), r.couple
-        return -np.asarray(r.force), -r.couple
+            return np.asarray(r.force), r.couple, r
+        return -np.asarray(r.force), -r.couple, r
     return None
 
 
-def _carried(
-    solution: ForceSolution, link: str, farther: set[str], pos: Mapping[str, np.ndarray]
-) -> list[_Load]:
+def _acts_at(ctx: _Ctx, r: Reaction) -> _At:
+    """Where a reaction acts: its pin, or for a slide its point on ``links[1]``."""
+    name = r.point or ""
+    if r.kind == "P" and ctx.m.coordinates(name) is not None:
+        return ctx.slide_point(name, r.links[1])
+    named = ctx.state.points.get(name)
+    return _At(name, np.zeros(2) if named is None else np.asarray(named.position))
+
+
+def _carried(ctx: _Ctx, solution: ForceSolution, link: str, farther: set[str]) -> list[_Load]:
     """The reactions of the groups already solved (farther out) on ``link``."""
     out = []
     for r in solution.reactions:
@@ -1240,7 +1248,7 @@ def _carried(
         if other not in farther:
             continue
         sign = 1.0 if r.links[1] == link else -1.0
-        at = pos.get(r.point or "", np.zeros(2))
+        at = _acts_at(ctx, r).xy
         force = sign * np.asarray(r.force)
         out.append(_Load(_rsym(other, link), link, force, at, sign * r.couple))
     return out
@@ -1248,9 +1256,7 @@ def _carried(
 
 def _known_loads(ctx: _Ctx, link: str, loads: Sequence[_Load]) -> None:
     doc = ctx.doc
-    parts: list = []
-    for x in loads:
-        parts += [", ", x.label] if parts else [x.label]
+    parts = _commas([x.label] for x in loads)
     doc.item(*doc.say("f_known", link=link, list=parts or [doc.word("f_none")]))
 
 
@@ -1261,8 +1267,11 @@ def _show_reaction(
     found = _find(solution, a, b, point, kind)
     if found is None:
         return
-    f, c = found
-    extra = doc.say("f_reaction_p", point=point, value=number(c, 1e-6)) if kind == "P" else []
+    f, c, r = found
+    extra: list = []
+    if kind == "P":
+        about = _acts_at(ctx, r).name
+        extra = doc.say("f_reaction_p", point=about, value=number(c, 1e-6))
     doc.item(
         *doc.say(
             "f_reaction",
@@ -1275,6 +1284,13 @@ def _show_reaction(
         ),
         *extra,
     )
+
+
+def _what(doc: Doc, head: list, gives: Sequence[Math]) -> list:
+    """An equation's name and the unknowns it gives: ``ΣF = 0 on link 2; gives R_32``."""
+    if not gives:
+        return head
+    return [*head, "; ", *doc.say("f_gives", what=_commas([sym] for sym in gives))]
 
 
 class _Steps:
@@ -1295,69 +1311,49 @@ def _moment_sum(point: str) -> Math:
 
 
 def _moment_step(
-    ctx: _Ctx,
-    link: str,
-    about: str,
-    loads: Sequence[_Load],
-    pos: Mapping[str, np.ndarray],
-    gives: list,
+    ctx: _Ctx, link: str, about: _At, loads: Sequence[_Load], gives: Sequence[Math]
 ) -> tuple[float, list]:
     """The known loads' moment about ``about`` and the words of ``ΣM_about(link) = 0``."""
     doc = ctx.doc
-    value = _moment_about(loads, pos[about])
-    what = [
-        *doc.say("f_moment", sum=_moment_sum(about), link=link),
+    value = _moment_about(loads, about.xy)
+    head = [
+        *doc.say("f_moment", sum=_moment_sum(about.name), link=link),
         "; ",
-        _mag("M", about),
+        _mag("M", about.name),
         ": ",
-        *doc.say("f_sum_moments", link=link, point=about),
+        *doc.say("f_sum_moments", link=link, point=about.name),
         " = ",
         _q(value, "N·m", 1e-6),
     ]
-    if gives:
-        what += ["; ", *doc.say("f_gives", what=gives)]
-    return value, what
+    return value, _what(doc, head, gives)
 
 
 def _tangential(
-    ctx: _Ctx,
-    steps: _Steps,
-    link: str,
-    known: str,
-    base: str,
-    pin: str,
-    loads: Sequence[_Load],
-    pos: Mapping[str, np.ndarray],
+    ctx: _Ctx, steps: _Steps, link: str, known: str, base: _At, pin: _At, loads: Sequence[_Load]
 ) -> np.ndarray:
     """ΣM_pin(link) = 0 gives the component of R_known,link at ``base`` ⊥ base–pin."""
-    b, c = pos[base], pos[pin]
-    length = _norm(c - b)
+    length = _norm(pin.xy - base.xy)
     rt_sym = _rsym(known, link, "τ")
-    moment, what = _moment_step(ctx, link, pin, loads, pos, [rt_sym])
+    moment, what = _moment_step(ctx, link, pin, loads, [rt_sym])
     rt = moment / length
-    equation = _f(
-        "−{r}·{l} + {m} = 0 ⇒ {r} = {m}/{l} = {mv}/{lv} = {rv}",
-        r=rt_sym,
-        l=_l(base, pin),
-        m=_mag("M", pin),
-        mv=_num(moment, 1e-6),
-        lv=length,
-        rv=_q(rt, "N", 1e-6),
-    )
-    steps(what, equation)
+    b, c = base.name, pin.name
+    m_pin, l_bc = _mag("M", c), _l(b, c)
+    numbers = [_num(moment, 1e-6), length]
+    ratio = _with_numbers("{0}/{1}", [m_pin, l_bc], numbers, _q(rt, "N", 1e-6))
+    steps(what, _f("−{r}·{l} + {m} = 0 ⇒ {r} = {q}", r=rt_sym, l=l_bc, m=m_pin, q=ratio))
     ctx.doc.para(
         *ctx.doc.say(
             "f_tangent",
             rt=Math("R^τ", r"R^{\tau}"),
             rn=Math("R^n", "R^{n}"),
-            perp=Math(f"⊥{base}{pin}", rf"\perp {base}{pin}"),
-            par=Math(f"∥{base}{pin}", rf"\parallel {base}{pin}"),
-            line=base + pin,
-            a=base,
-            b=pin,
+            perp=Math(f"⊥{b}{c}", rf"\perp {b}{c}"),
+            par=Math(f"∥{b}{c}", rf"\parallel {b}{c}"),
+            line=b + c,
+            a=b,
+            b=c,
         )
     )
-    return rt * _j((c - b) / length)
+    return rt * _j((pin.xy - base.xy) / length)
 
 
 def _solve2(a: np.ndarray, b: np.ndarray, rhs: np.ndarray) -> tuple[float, float]:
@@ -1390,46 +1386,52 @@ def _slide_moment(
     steps: _Steps,
     link: str,
     known: str,
-    s_name: str,
-    about: str,
+    s: _At,
+    about: _At,
     loads: Sequence[_Load],
-    pos: Mapping[str, np.ndarray],
     nvec: np.ndarray,
     u: np.ndarray,
     extra: tuple[Math, float] | None = None,
 ) -> None:
-    """ΣM_about(link) = 0 gives the moment of the guide's reaction about its point ``s_name``."""
+    """ΣM_about(link) = 0 gives the moment of the guide's reaction about its point ``s``."""
     msym = _mag("M", _sub2(known, link))
-    moment, what = _moment_step(ctx, link, about, loads, pos, [msym])
-    value = -(_cross(pos[s_name] - pos[about], nvec) + moment + (extra[1] if extra else 0.0))
+    moment, what = _moment_step(ctx, link, about, loads, [msym])
+    value = -(_cross(s.xy - about.xy, nvec) + moment + (extra[1] if extra else 0.0))
     terms = [msym]
-    if s_name != about:
-        arm = Math(f"{about}{s_name}×", rf"\vec{{{about}{s_name}}} \times ")
-        terms.append(arm + _rvec(known, link))
+    if s.name != about.name:
+        arm = f"{about.name}{s.name}"
+        terms.append(Math(f"{arm}×", rf"\vec{{{arm}}} \times ") + _rvec(known, link))
     if extra is not None:
         terms.append(extra[0])
-    terms.append(_mag("M", about))
+    terms.append(_mag("M", about.name))
     lhs = math_join(terms, " + ")
     steps(what, _f("{lhs} = 0 ⇒ {m} = {v}", lhs=lhs, m=msym, v=_q(value, "N·m", 1e-6)))
-    _offset(ctx, s_name, value, nvec, u)
+    _offset(ctx, s.name, value, nvec, u)
 
 
-def _inner_step(
-    steps: _Steps, doc: Doc, link: str, terms: list[Math], sym: Math, value: np.ndarray
+def _link_balance(
+    steps: _Steps, link: str, sources: tuple[str, str], rest: np.ndarray, gives: str
 ) -> None:
-    """ΣF = 0 on one link gives the reaction ``sym``."""
-    what = [*doc.say("f_force_link", link=link), "; ", *doc.say("f_gives", what=[sym])]
-    lhs = math_join(terms, " + ")
-    steps(what, _f("{lhs} = 0 ⇒ {r} = {v}", lhs=lhs, r=sym, v=_xy(value, "N")))
+    """ΣF = 0 on ``link``: ``R_a,link + ΣP_link + R_b,link = 0`` gives ``R_gives,link``.
+
+    ``sources`` are the links ``a``, ``b`` whose reactions on ``link`` enter; ``rest``
+    is the known part of the sum, ``ΣP_link`` and the other reaction.
+    """
+    doc = steps.doc
+    a, b = sources
+    sym = _rvec(gives, link)
+    lhs = math_join([_rvec(a, link), _sum(link), _rvec(b, link)], " + ")
+    what = _what(doc, doc.say("f_force_link", link=link), [sym])
+    steps(what, _f("{lhs} = 0 ⇒ {r} = {v}", lhs=lhs, r=sym, v=_xy(-rest, "N")))
 
 
-def _dyad_forces(
-    ctx: _Ctx,
-    g: AssurGroup,
-    d: _Dyad,
-    loads: Mapping[str, list[_Load]],
-    pos: Mapping[str, np.ndarray],
-) -> None:
+def _moment_of(point: str, source: str, target: str) -> Math:
+    """``M_B(R_32)``: the moment about ``point`` of the force ``source`` exerts on ``target``."""
+    sub = _sub2(source, target)
+    return Math(f"M_{point}(R_{sub})", rf"M_{{{point}}}(R_{{{sub}}})")
+
+
+def _dyad_forces(ctx: _Ctx, g: AssurGroup, d: _Dyad, loads: Mapping[str, list[_Load]]) -> None:
     """The textbook's equations of a dyad, each solved for its unknowns with numbers."""
     doc = ctx.doc
     steps = _Steps(doc)
@@ -1437,58 +1439,33 @@ def _dyad_forces(
     ext = {p.links[0]: p for p in g.external_pairs}
     forces = {x: _sum_force(loads[x]) for x in g.links}
     if mid.kind is PairKind.R:
-        _pin_dyad_forces(ctx, steps, g, ext, mid.point or "?", loads, forces, pos)
+        _pin_dyad_forces(ctx, steps, g, ext, ctx.pin(mid.point or "?"), loads, forces)
         return
     la, lb = d.la, d.lhs_link or ""
     u, name = ctx.guide(mid.pair)
     nn = _j(u)
     n_sym = _rsym(la, lb)
     doc.para(*doc.say("f_slide", sym=n_sym, guide=name))
-    b_name, s_name = ext[la].point or "?", mid.point or "?"
-    b, s = pos[b_name], pos[s_name]
+    b, s = ctx.pin(ext[la].point or "?"), ctx.slide_at(mid.pair)
     src_a = ext[la].links[1]
     if ext[lb].kind is PairKind.R:  # RPR: moments about the block's pin, then the other pivot
-        d_name = ext[lb].point or "?"
-        mb, what = _moment_step(ctx, la, b_name, loads[la], pos, [])
-        inner = Math(f"M_{b_name}(R_{_sub2(lb, la)})", rf"M_{{{b_name}}}(R_{{{_sub2(lb, la)}}})")
-        steps(
-            what,
-            _f("{i} + {m} = 0 ⇒ {i} = {v}", i=inner, m=_mag("M", b_name), v=_q(-mb, "N·m", 1e-6)),
-        )
-        md, what = _moment_step(ctx, lb, d_name, loads[lb], pos, [n_sym])
-        lever = _cross(b - pos[d_name], nn)
-        doc.para(*doc.say("f_lever", sym=n_sym, point=b_name, about=d_name, h=number(lever)))
+        p_d = ctx.pin(ext[lb].point or "?")
+        m_b, m_d = _mag("M", b.name), _mag("M", p_d.name)
+        mb, what = _moment_step(ctx, la, b, loads[la], [])
+        inner = _moment_of(b.name, lb, la)
+        steps(what, _f("{i} + {m} = 0 ⇒ {i} = {v}", i=inner, m=m_b, v=_q(-mb, "N·m", 1e-6)))
+        md, what = _moment_step(ctx, lb, p_d, loads[lb], [n_sym])
+        lever = _cross(b.xy - p_d.xy, nn)
+        doc.para(*doc.say("f_lever", sym=n_sym, point=b.name, about=p_d.name, h=number(lever)))
         value = -(mb + md) / lever if abs(lever) > 1e-12 else math.nan
-        equation = _f(
-            "{n}·h + {mb} + {md} = 0 ⇒ {n} = −({mbv} + {mdv})/{h} = {v}",
-            n=n_sym,
-            mb=_mag("M", b_name),
-            md=_mag("M", d_name),
-            mbv=_paren(mb),
-            mdv=_paren(md),
-            h=_paren(lever),
-            v=_q(value, "N", 1e-6),
-        )
-        steps(what, equation)
+        found = _q(value, "N", 1e-6)
+        solved = _f("−({b} + {d})/{h} = {v}", b=_paren(mb), d=_paren(md), h=_paren(lever), v=found)
+        steps(what, _f("{n}·h + {b} + {d} = 0 ⇒ {n} = {s}", n=n_sym, b=m_b, d=m_d, s=solved))
         nvec = value * nn
-        _offset(ctx, s_name, mb - _cross(s - b, nvec), nvec, u)
+        _offset(ctx, s.name, mb - _cross(s.xy - b.xy, nvec), nvec, u)
+        _link_balance(steps, la, (src_a, lb), forces[la] - nvec, gives=src_a)
         src_b = ext[lb].links[1]
-        _inner_step(
-            steps,
-            doc,
-            la,
-            [_rvec(src_a, la), _sum(la), _rvec(lb, la)],
-            _rvec(src_a, la),
-            nvec - forces[la],
-        )
-        _inner_step(
-            steps,
-            doc,
-            lb,
-            [_rvec(src_b, lb), _sum(lb), _rvec(la, lb)],
-            _rvec(src_b, lb),
-            -(forces[lb] + nvec),
-        )
+        _link_balance(steps, lb, (src_b, la), forces[lb] + nvec, gives=src_b)
         return
     e = ext[lb]  # RPP: the inner slide and the outer guide carry the forces on lb
     ue, name_e = ctx.guide(e.pair)
@@ -1496,30 +1473,19 @@ def _dyad_forces(
     e_sym = _rsym(e.links[1], lb)
     doc.para(*doc.say("f_slide", sym=e_sym, guide=name_e))
     x_mid, x_ext = _solve2(nn, ne, -forces[lb])
-    steps(
-        [*doc.say("f_force_link", link=lb), "; ", *doc.say("f_gives", what=[n_sym, ", ", e_sym])],
-        _balance(
-            [_rvec(la, lb), _rvec(e.links[1], lb)], _sum(lb), [(n_sym, x_mid), (e_sym, x_ext)]
-        ),
-    )
+    terms = [_rvec(la, lb), _rvec(e.links[1], lb)]
+    what = _what(doc, doc.say("f_force_link", link=lb), [n_sym, e_sym])
+    steps(what, _balance(terms, _sum(lb), [(n_sym, x_mid), (e_sym, x_ext)]))
     nvec = x_mid * nn
-    _inner_step(
-        steps,
-        doc,
-        la,
-        [_rvec(src_a, la), _sum(la), _rvec(lb, la)],
-        _rvec(src_a, la),
-        nvec - forces[la],
-    )
+    _link_balance(steps, la, (src_a, lb), forces[la] - nvec, gives=src_a)
     couple_sym = _mag("M", _sub2(la, lb))
-    mb, what = _moment_step(ctx, la, b_name, loads[la], pos, [couple_sym])
-    couple = mb - _cross(s - b, nvec)
+    mb, what = _moment_step(ctx, la, b, loads[la], [couple_sym])
+    couple = mb - _cross(s.xy - b.xy, nvec)
     steps(what, _f("{c} = {v}", c=couple_sym, v=_q(couple, "N·m", 1e-6)))
-    _offset(ctx, s_name, couple, nvec, u)
-    se = e.point or "?"
-    inner = Math(f"M_{se}(R_{_sub2(la, lb)})", rf"M_{{{se}}}(R_{{{_sub2(la, lb)}}})")
-    extra = (inner, couple + _cross(s - pos[se], nvec))
-    _slide_moment(ctx, steps, lb, e.links[1], se, se, loads[lb], pos, x_ext * ne, ue, extra)
+    _offset(ctx, s.name, couple, nvec, u)
+    se = ctx.slide_at(e.pair)
+    extra = (_moment_of(se.name, la, lb), couple + _cross(s.xy - se.xy, nvec))
+    _slide_moment(ctx, steps, lb, e.links[1], se, se, loads[lb], x_ext * ne, ue, extra)
 
 
 def _pin_dyad_forces(
@@ -1527,15 +1493,14 @@ def _pin_dyad_forces(
     steps: _Steps,
     g: AssurGroup,
     ext: Mapping[str, GroupPair],
-    pin: str,
+    pin: _At,
     loads: Mapping[str, list[_Load]],
     forces: Mapping[str, np.ndarray],
-    pos: Mapping[str, np.ndarray],
 ) -> None:
     """RRR, RRP, PRP: tangential components, the group's force balance, the inner pin."""
     doc = ctx.doc
     tangent = {
-        link: _tangential(ctx, steps, link, e.links[1], e.point or "?", pin, loads[link], pos)
+        link: _tangential(ctx, steps, link, e.links[1], ctx.pin(e.point or "?"), pin, loads[link])
         for link, e in ext.items()
         if e.kind is PairKind.R
     }
@@ -1545,7 +1510,7 @@ def _pin_dyad_forces(
     for link in g.links:
         e, src = ext[link], ext[link].links[1]
         if e.kind is PairKind.R:
-            n = pos[pin] - pos[e.point or ""]
+            n = pin.xy - ctx.pin(e.point or "").xy
             unknown.append((_rsym(src, link, "n"), n / _norm(n)))
             terms += [_rvec(src, link, "n"), _rvec(src, link, "τ")]
         else:
@@ -1555,7 +1520,7 @@ def _pin_dyad_forces(
             doc.para(*doc.say("f_slide", sym=_rsym(src, link), guide=name))
     (s1, d1), (s2, d2) = unknown
     x1, x2 = _solve2(d1, d2, -rest)
-    what = [doc.word("f_force_group"), "; ", *doc.say("f_gives", what=[s1, ", ", s2])]
+    what = _what(doc, [doc.word("f_force_group")], [s1, s2])
     steps(what, _balance(terms, _sum(), [(s1, x1), (s2, x2)]))
     outer = {g.links[0]: x1 * d1, g.links[1]: x2 * d2}
     for link, t in tangent.items():
@@ -1563,20 +1528,11 @@ def _pin_dyad_forces(
     first = next((x for x in g.links if ext[x].kind is PairKind.R), g.links[0])
     other = g.links[1] if first == g.links[0] else g.links[0]
     src = ext[first].links[1]
-    _inner_step(
-        steps,
-        doc,
-        first,
-        [_rvec(src, first), _sum(first), _rvec(other, first)],
-        _rvec(other, first),
-        -(outer[first] + forces[first]),
-    )
+    _link_balance(steps, first, (src, other), outer[first] + forces[first], gives=other)
     for link, e in ext.items():
         if e.kind is PairKind.P:
-            u = ctx.guide(e.pair)[0]
-            _slide_moment(
-                ctx, steps, link, e.links[1], e.point or "?", pin, loads[link], pos, outer[link], u
-            )
+            u, s = ctx.guide(e.pair)[0], ctx.slide_at(e.pair)
+            _slide_moment(ctx, steps, link, e.links[1], s, pin, loads[link], outer[link], u)
 
 
 def _group_forces(
@@ -1585,27 +1541,23 @@ def _group_forces(
     step: GroupStep,
     applied: Sequence[_Load],
     farther: set[str],
-    pos: Mapping[str, np.ndarray],
     whole: bool,
 ) -> None:
     doc = ctx.doc
     g = step.group
     loads = {
-        link: [x for x in applied if x.link == link] + _carried(solution, link, farther, pos)
+        link: [x for x in applied if x.link == link] + _carried(ctx, solution, link, farther)
         for link in step.links
     }
     for link in step.links:
         _known_loads(ctx, link, loads[link])
     pairs = list(g.pairs) if g is not None else []
-    listing: list = []
-    for p in pairs:
-        listing += [", "] if listing else []
-        listing += [_rsym(p.links[1], p.links[0]), f" ({p.point})"]
+    listing = _commas([_rsym(p.links[1], p.links[0]), f" ({p.point})"] for p in pairs)
     if listing:
         doc.para(*doc.say("f_unknowns", list=listing))
     d = None if whole else _dyad(ctx, g)
     if g is not None and d is not None:
-        _dyad_forces(ctx, g, d, loads, pos)
+        _dyad_forces(ctx, g, d, loads)
     elif g is not None:
         doc.para(*doc.say("f_generic", eqs=3 * len(g.links), n=len(g.links)))
     doc.para(doc.word("f_found"))
@@ -1622,7 +1574,18 @@ def _virtual(plan: SolvePlan, state: KinematicState) -> tuple[KinematicState, bo
     if any(abs(d.speed) > 0 for d in plan.drivers):
         return state, False
     drivers = tuple(dataclasses.replace(d, speed=1.0) for d in plan.drivers)
-    return solve_pose(dataclasses.replace(plan, drivers=drivers)), True
+    return solve_pose(dataclasses.replace(plan, drivers=drivers), state.inputs), True
+
+
+def _pose(plan: SolvePlan, inputs: Sequence[float]) -> Math:
+    """The driver inputs from the sketch: ``φ1 = 0.5 rad`` (turned), ``s1 = 0.02 m`` (slid)."""
+    parts = []
+    for d, x in zip(plan.drivers, inputs, strict=True):
+        if d.kind == "R":
+            parts.append(_f("{s} = {v}", s=subscript("φ", d.link), v=_q(x, "rad")))
+        else:
+            parts.append(_f("{s} = {v}", s=Math(f"s{d.link}", f"s_{{{d.link}}}"), v=_q(x, "m")))
+    return math_join(parts, ", ")
 
 
 _Power = tuple[Math, float, Math, float]  # balancing symbol, its value, speed symbol, speed
@@ -1634,7 +1597,6 @@ def _driver_forces(
     solution: ForceSolution,
     drv: DriverStep,
     loads: Sequence[_Load],
-    pos: Mapping[str, np.ndarray],
 ) -> _Power:
     """The balancing moment (or force) from the driver's equilibrium, then the ground's reaction."""
     doc = ctx.doc
@@ -1652,7 +1614,7 @@ def _driver_forces(
         speed = float(vctx.rates(link)[1][:2] @ u)
         return sym, found, Math(f"v{link}", f"v_{{{link}}}"), speed
     pivot = drv.point or "?"
-    a = pos.get(pivot, drv.pivot)
+    a = ctx.pin(pivot).xy if pivot in ctx.state.points else np.asarray(drv.pivot)
     ma = _moment_about(loads, a)
     doc.para(*doc.say("f_mcb", sum=_moment_sum(pivot), link=link))
     sums = doc.say("f_sum_moments", link=link, point=pivot)
@@ -1662,7 +1624,8 @@ def _driver_forces(
         t = math.radians(balance.values[0])
         u = np.array([math.cos(t), math.sin(t)])
         point = balance.point or ""
-        lever = _cross(pos.get(point, a) - a, u)
+        at = ctx.at(link, point)[0] if ctx.m.coordinates(point) is not None else a
+        lever = _cross(at - a, u)
         sym = _mag("P", "cb")
         value = -ma / lever if abs(lever) > 1e-12 else math.nan
         doc.equation(
@@ -1729,16 +1692,7 @@ def _power_check(
             values.append(load.power[1])
     loads_power = sum(values, 0.0)
     for sym, value, speed_sym, speed in drivers:
-        doc.item(
-            _f(
-                "{s}·{w} = {v}·{wv} = {p}",
-                s=sym,
-                w=speed_sym,
-                v=_paren(value),
-                wv=_paren(speed),
-                p=_q(value * speed, "W"),
-            )
-        )
+        doc.item(_power(sym, speed_sym, value, speed))
         values.append(value * speed)
     if solution.friction_loss is not None:
         doc.item(*doc.say("f_power_friction", value=number(solution.friction_loss, 1e-9)))
@@ -1750,14 +1704,9 @@ def _power_check(
     if len(drivers) == 1 and abs(drivers[0][3]) > 1e-12 and solution.friction_loss is None:
         sym, _, speed_sym, speed = drivers[0]
         value = -loads_power / speed
-        eq = _f(
-            "{s} = −ΣP·v/{w} = −{p}/{wv} = {v}",
-            s=sym,
-            w=speed_sym,
-            p=_paren(loads_power),
-            wv=_paren(speed),
-            v=_num(value, 1e-6),
-        )
+        numbers = [_paren(loads_power), _paren(speed)]
+        solved = _with_numbers("−{0}/{1}", [_f("ΣP·v"), speed_sym], numbers, _num(value, 1e-6))
+        eq = _f("{s} = {v}", s=sym, v=solved)
         doc.para(*doc.say("f_power_gives", eq=eq))
 
 
@@ -1768,7 +1717,7 @@ def explain_forces(
     lang: str = "en",
     fmt: str = "text",
 ) -> str:
-    """The kinetostatics of ``solution`` (at the sketch pose) as the textbook's worked solution.
+    """The kinetostatics of ``solution`` (at its pose) as the textbook's worked solution.
 
     Parameters
     ----------
@@ -1777,7 +1726,8 @@ def explain_forces(
     plan : SolvePlan
         From :func:`kinematics.plan.make_plan`.
     solution : ForceSolution
-        From :func:`kinematics.forces.solve_forces` at the sketch pose.
+        From :func:`kinematics.forces.solve_forces`, at any pose: the motion
+        (inertia loads, the power check) is solved at its ``inputs``.
     lang : {"en", "vi"}
         English or Vietnamese.
     fmt : {"text", "markdown", "latex"}
@@ -1810,19 +1760,22 @@ def explain_forces(
     """
     check_options(lang, fmt)
     doc = Doc(PHRASES, lang)
-    state = solve_pose(plan)
+    state = solve_pose(plan, solution.inputs or None)
     ctx = _Ctx(doc, plan, state)
     virtual_state, virtual = _virtual(plan, state)
     vctx = _Ctx(doc, plan, virtual_state) if virtual else ctx
     m = report.mechanism
-    doc.title(*doc.say("f_title", name=m.name or m.source))
+    if any(solution.inputs):
+        pose = _pose(plan, solution.inputs)
+        doc.title(*doc.say("f_title_at", name=m.name or m.source, pose=pose))
+    else:
+        doc.title(*doc.say("f_title", name=m.name or m.source))
     doc.para(doc.word("f_conventions"))
     doc.para(*doc.say("f_order", order=" → ".join(solution.order)))
     doc.heading("1. " + doc.word("loads"))
     applied = _applied_loads(ctx, vctx)
     if not applied:
         doc.para(doc.word("no_loads"))
-    pos = {name: np.asarray(p.position) for name, p in state.points.items()}
     whole = any(p.friction or p.circle for p in ctx.m.pairs)
     if whole:
         doc.para(doc.word("f_friction"))
@@ -1833,7 +1786,7 @@ def explain_forces(
     for step in reversed(plan.steps):
         kind = f" {step.kind}" if step.kind else ""
         doc.heading(*doc.say("f_group", k=k, label=step.label, kind=kind))
-        _group_forces(ctx, solution, step, applied, farther, pos, whole)
+        _group_forces(ctx, solution, step, applied, farther, whole)
         farther |= set(step.links)
         k += 1
     powers = []
@@ -1841,9 +1794,9 @@ def explain_forces(
         doc.heading(*doc.say("f_driver", k=k, link=drv.link))
         k += 1
         on_driver = [x for x in applied if x.link == drv.link]
-        loads = on_driver + _carried(solution, drv.link, farther, pos)
+        loads = on_driver + _carried(ctx, solution, drv.link, farther)
         _known_loads(ctx, drv.link, loads)
-        powers.append(_driver_forces(ctx, vctx, solution, drv, loads, pos))
+        powers.append(_driver_forces(ctx, vctx, solution, drv, loads))
     for _, a, b, point in plan.contacts:
         for r in solution.reactions:
             if r.kind == "H" and set(r.links) == {a, b}:

@@ -11,7 +11,9 @@ moment (or the balancing force of a ``balance`` statement).
 Sign conventions: a reaction is reported as the force that ``links[0]``
 exerts on ``links[1]`` (N, world frame); a prismatic pair also carries the
 couple that ``links[0]`` exerts on ``links[1]`` (N·m). The balancing moment is
-the moment the motor applies to the driver, counter-clockwise positive.
+the moment the motor applies to the driver, counter-clockwise positive; for a
+sliding driver it is the force the motor applies along the slide (N, positive
+along the driver's direction), also given as ``balancing_slide_force``.
 
 Every solution comes with the virtual-power check: the power of every load,
 inertia load and the balancing moment must add up to zero; its residual is
@@ -58,7 +60,12 @@ class IndeterminateError(MechanismError):
 
 @dataclass(frozen=True)
 class Reaction:
-    """The force (and for a prismatic pair the couple) ``links[0]`` exerts on ``links[1]``."""
+    """The force (and for a prismatic pair the couple) ``links[0]`` exerts on ``links[1]``.
+
+    At a pin the force acts at the pin. At a slide it acts through the pair's
+    point as fixed to ``links[1]``, with ``couple`` besides (away from the
+    sketch the point of that name on ``links[0]`` has moved along the guide).
+    """
 
     point: str | None
     links: tuple[str, str]
@@ -74,7 +81,36 @@ class Reaction:
 
 @dataclass(frozen=True)
 class ForceSolution:
-    """Reactions in the order solved, the balancing moment(s) or force, the power check."""
+    """Reactions in the order solved, the balancing moment(s) or force, the power check, the pose.
+
+    Attributes
+    ----------
+    reactions : tuple of Reaction
+        In the order solved, from the farthest group to the drivers.
+    balancing_moment : Mapping[str, float]
+        For each driver without a ``balance`` statement, what the motor applies
+        to it: for a rotating driver the moment (N·m, counter-clockwise
+        positive); for a sliding driver, under the same key for the callers
+        that read it, the force along its slide (N, positive along the
+        driver's direction), which :attr:`balancing_slide_force` also holds.
+    balancing_force : numpy.ndarray or None
+        The balancing force of a ``balance`` statement (N, world frame).
+    power_residual : float
+        The virtual-power check: the sum of the powers relative to the largest.
+    order : tuple of str
+        The labels of the steps, in the order solved.
+    friction_loss : float or None
+        The power friction dissipates (W), when a pair has friction.
+    pin_forces : Mapping[str, Mapping[str, numpy.ndarray]]
+        At each compound hinge, the force its pin exerts on each of its links.
+    inputs : tuple of float
+        The driver inputs the solution is at (rad or m from the sketch, in the
+        order of the plan's drivers); ``()``, the default, stands for the
+        sketch (all zeros).
+    balancing_slide_force : Mapping[str, float]
+        For each sliding driver, the balancing force along its slide (N,
+        positive along the driver's direction).
+    """
 
     reactions: tuple[Reaction, ...]
     balancing_moment: Mapping[str, float]
@@ -83,11 +119,17 @@ class ForceSolution:
     order: tuple[str, ...]
     friction_loss: float | None = None
     pin_forces: Mapping[str, Mapping[str, np.ndarray]] = field(default_factory=dict)
+    inputs: tuple[float, ...] = ()
+    balancing_slide_force: Mapping[str, float] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
 class ForceSweep:
-    """Reactions and balancing over many poses: arrays with a leading pose axis."""
+    """Reactions and balancing over many poses: arrays with a leading pose axis.
+
+    As in :class:`ForceSolution`, ``balancing_moment`` holds for a sliding
+    driver the balancing force along its slide (N), not a moment.
+    """
 
     inputs: np.ndarray
     reactions: tuple[tuple[str | None, tuple[str, str], str, np.ndarray, np.ndarray], ...]
@@ -363,6 +405,8 @@ def solve_forces(
 ) -> ForceSolution:
     """Reactions and balancing moment at one input (default: the sketch pose).
 
+    The solution records the input in its ``inputs``.
+
     Raises
     ------
     IndeterminateError
@@ -379,18 +423,21 @@ def solve_forces(
             kind,
             force[0],
             float(couple[0]),
-            _two_contacts(plan, point, links, kind, force[0], float(couple[0])),
+            _two_contacts(plan, point, links, kind, force[0], float(couple[0]), motion),
         )
         for point, links, kind, force, couple in sweep.reactions
     )
+    balancing = {k: float(v[0]) for k, v in sweep.balancing_moment.items()}
     return ForceSolution(
         reactions,
-        {k: float(v[0]) for k, v in sweep.balancing_moment.items()},
+        balancing,
         None if sweep.balancing_force is None else sweep.balancing_force[0],
         float(sweep.power_residual[0]),
         sweep.order,
         None if sweep.friction_loss is None else float(sweep.friction_loss[0]),
         _pin_forces(plan.mechanism, reactions),
+        inputs,
+        {d.link: balancing[d.link] for d in plan.drivers if d.kind == "P" and d.link in balancing},
     )
 
 
@@ -443,11 +490,13 @@ def _two_contacts(
     kind: str,
     force: np.ndarray,
     couple: float,
+    motion: Motion,
 ) -> tuple[np.ndarray, np.ndarray] | None:
     """A slide with two contact points ``span`` apart: the two normal forces.
 
     With N the normal force and C its moment about the pair's point, the
-    contacts at ∓span/2 along the slide carry (N ∓ C/(span/2))/2 each.
+    contacts at ∓span/2 along the slide carry (N ∓ C/(span/2))/2 each. The
+    slide's direction is taken at the pose of ``motion`` (its first row).
     """
     if kind != "P":
         return None
@@ -461,7 +510,8 @@ def _two_contacts(
     )
     if pair is None or pair.span is None:
         return None
-    t = pair.angle or 0.0  # the slide direction at the sketch (the forces are at the sketch)
+    turned = next((x for x in pair.links if x in motion.q), None)  # the links keep one angle
+    t = (pair.angle or 0.0) + (float(motion.q[turned][0, 2]) if turned is not None else 0.0)
     u = np.array([math.cos(t), math.sin(t)])
     norm = float(np.hypot(*force))
     half = pair.span / 2

@@ -45,8 +45,14 @@ def exact_forces_to_dict(result: ExactForces) -> dict[str, Any]:
 
 
 def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
-    """The JSON form: balancing moment, reactions (point, links, force, magnitude), residual."""
+    """The JSON form: balancing moment, reactions (point, links, force, magnitude), residual.
+
+    ``inputs`` is the pose (driver inputs from the sketch); a sliding driver's
+    balancing force along its slide (N) is in ``balancing_moment`` as before and,
+    by its own name, in ``balancing_slide_force``.
+    """
     out: dict[str, Any] = {
+        "inputs": list(result.inputs),
         "order": list(result.order),
         "balancing_moment": (
             next(iter(result.balancing_moment.values()))
@@ -69,6 +75,8 @@ def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
         ],
         "power_residual": result.power_residual,
     }
+    if result.balancing_slide_force:
+        out["balancing_slide_force"] = dict(result.balancing_slide_force)
     if result.balancing_force is not None:
         out["balancing_force"] = result.balancing_force.tolist()
     if result.friction_loss is not None:

@@ -157,7 +157,11 @@ def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -
     rolled = any(link not in motion.q for link, *_ in plan.contacts)
     if plan.mechanism.loads and not rolled and not any(s.group is None for s in plan.steps):
         forces = forces_over(plan, motion)
-        balancing = {f"moment {k}": v for k, v in forces.balancing_moment.items()}
+        sliding = {d.link for d in plan.drivers if d.kind == "P"}
+        balancing = {
+            f"{'slide force' if k in sliding else 'moment'} {k}": v
+            for k, v in forces.balancing_moment.items()
+        }
         if forces.balancing_force is not None:
             balancing["force x"] = forces.balancing_force[:, 0]
             balancing["force y"] = forces.balancing_force[:, 1]

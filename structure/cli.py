@@ -366,7 +366,10 @@ def _forces(args: argparse.Namespace) -> int:
         out.append(f"  compound pin {point}: the pin pushes {parts} N")
     out.append("")
     for link, value in result.balancing_moment.items():
-        out.append(f"Balancing moment on driver {link}: {value:.6g} N·m (counter-clockwise +)")
+        if link in result.balancing_slide_force:
+            out.append(f"Balancing force on driver {link}: {value:.6g} N along its slide")
+        else:
+            out.append(f"Balancing moment on driver {link}: {value:.6g} N·m (counter-clockwise +)")
     if result.balancing_force is not None:
         out.append(f"Balancing force: {_vector(result.balancing_force)} N")
     if result.friction_loss is not None:
@@ -388,8 +391,12 @@ def _print_exact_forces(report, plan, as_json: bool) -> int:
         out.append(
             f"  {point} ({links[0]} on {links[1]}, {kind}): F = ({force[0]}, {force[1]}) N{extra}"
         )
+    sliding = {d.link for d in plan.drivers if d.kind == "P"}
     for link, value in result.balancing_moment.items():
-        out.append(f"Balancing moment on driver {link}: {value} N·m")
+        if link in sliding:
+            out.append(f"Balancing force on driver {link}: {value} N along its slide")
+        else:
+            out.append(f"Balancing moment on driver {link}: {value} N·m")
     if result.balancing_force is not None:
         f = result.balancing_force
         out.append(f"Balancing force: ({f[0]}, {f[1]}) N")

@@ -18,7 +18,7 @@ from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
 from kinematics.solve import solve_pose
 from structure.cli import main
-from structure.edgelist import read_edgelist
+from structure.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES
@@ -26,6 +26,10 @@ from ..conftest import FIXTURES
 
 def fixture(name: str) -> str:
     return str(FIXTURES / f"{name}.edges")
+
+
+def read_text(name: str) -> str:
+    return (FIXTURES / f"{name}.edges").read_text()
 
 
 def sketch(name: str) -> tuple[dict[str, np.ndarray], float]:
@@ -247,6 +251,35 @@ def test_slotted_link_forces_by_virtual_power():
     assert "ΣM_B(link 2) = 0" in text and "x = M/N = 0 m from B" in text
 
 
+def test_forces_away_from_the_sketch_by_virtual_power():
+    # the six-link of problem 3.10 with masses and gravity, the crank turned −0.5 rad: the
+    # balancing moment from virtual power at that pose, Σ P·v + Σ M·ω + M_cb·ω1 = 0, with the
+    # inertia loads −m·a_S, −J·ε, from the kinematics alone (no force solve)
+    extra = ["point S3 0.25 0.1 on=3", "mass 3 2 0.01 S3", "mass 5 3 0 E", "gravity 0 -9.81"]
+    report = analyze(parse_edgelist(read_text("ch3_3_10_sixbar").splitlines() + extra))
+    plan = make_plan(report)
+    state = solve_pose(plan, (-0.5,))
+    gravity = np.array([0.0, -9.81])
+    point, link = state.points, state.links
+    power = float(np.array([-400.0, 0.0]) @ point["E"].velocity)
+    for name, mass in (("S3", 2.0), ("E", 3.0)):
+        power += float(mass * (gravity - point[name].acceleration) @ point[name].velocity)
+    power += -0.01 * link["3"].epsilon * link["3"].omega
+    m_cb = -power / link["1"].omega
+    solution = solve_forces(plan, (-0.5,))
+    assert solution.inputs == (-0.5,)
+    text = explain_forces(report, plan, solution)
+    assert "(kinetostatics at φ1 = -0.5 rad from the sketch pose)" in text
+    assert f"M_cb = −M_A = {g(m_cb)} N·m" in text
+    assert f"balancing moment M_cb = {g(m_cb)} N·m" in text
+    a_s3 = -2.0 * point["S3"].acceleration
+    assert f"P^in_3 = −m·a_S at S3 on link 3: ({g(a_s3[0])}, {g(a_s3[1])}) N" in text
+    assert "Sum: 0 W ≈ 0 ✓" in text
+    sketch_text = explain_forces(report, plan, solve_forces(plan))
+    assert "(kinetostatics at the sketch pose)" in sketch_text
+    assert f"M_cb = −M_A = {g(m_cb)} N·m" not in sketch_text
+
+
 def test_crank_slider_guide_offset_by_hand():
     # problem 3.5: the guide's normal force N = P3·tan30° acts x = P3·h3/N from C
     n = 1000 * math.tan(math.radians(30))
@@ -269,19 +302,43 @@ def test_crank_slider_guide_offset_by_hand():
     ],
 )
 def test_each_step_agrees_with_the_reactions_solved(name):
-    text = forces_text(name)
+    assert steps_agree(forces_text(name)) >= 1
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["ch3_3_5_crank_slider", "ch3_3_6_sine_mechanism", "ch3_3_8_slotted_link", "ch3_3_10_sixbar"],
+)
+def test_each_step_agrees_with_the_reactions_away_from_the_sketch(name):
+    # turned 0.3 rad the slides have moved: a slide's reaction acts at its point on the link
+    # it acts on (E3, not the E of the block), and its moment is about that point
+    report = analyze(read_edgelist(fixture(name)))
+    plan = make_plan(report)
+    text = explain_forces(report, plan, solve_forces(plan, (0.3,)))
+    assert steps_agree(text) >= 1
+
+
+def steps_agree(text: str) -> int:
+    """Every reaction and slide moment a step gives equals the one the solve found; how many."""
     found = {
         m[1]: np.array([float(m[2]), float(m[3])])
         for m in re.finditer(r"- (R_\S+) at \S+: \((\S+), (\S+)\) N", text)
     }
-    steps = list(re.finditer(r"⇒ (R_\S+) = \((\S+), (\S+)\) N", text))
+    moments = {
+        "M_" + m[1]: float(m[2])
+        for m in re.finditer(r"- R_(\S+) at .*; moment about \S+ (\S+) N·m", text)
+    }
     checked = 0
-    for m in steps:
+    for m in re.finditer(r"⇒ (R_\S+) = \((\S+), (\S+)\) N", text):
         if m[1] in found:
             assert np.allclose([float(m[2]), float(m[3])], found[m[1]], atol=1e-4), m[0]
             checked += 1
-    assert checked >= 1
+    for m in re.finditer(r"⇒ (M_\S+) = (\S+) N·m", text):
+        if m[1] in moments:
+            assert float(m[2]) == pytest.approx(moments[m[1]], rel=1e-5, abs=1e-4), m[0]
+            checked += 1
     assert "≈ 0 ✓" in text
+    return checked
 
 
 def test_balancing_force_and_slider_driver():

@@ -13,7 +13,8 @@ from hypothesis import strategies as st
 
 from kinematics.forces import IndeterminateError, solve_forces
 from kinematics.plan import make_plan
-from kinematics.solve import SingularPoseError
+from kinematics.report import forces_to_dict
+from kinematics.solve import SingularPoseError, solve_pose
 from structure.cli import main
 from structure.edgelist import parse_edgelist, write_edgelist
 from structure.generators import random_mechanism
@@ -129,6 +130,7 @@ def test_cli_forces_json(capsys, tmp_path):
     assert main(["forces", str(path), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["balancing_moment"] == pytest.approx(50.0)
+    assert data["inputs"] == [0.0] and "balancing_slide_force" not in data
     assert {"point", "links", "force", "magnitude"} <= set(data["reactions"][0])
     assert data["power_residual"] < 1e-12
 
@@ -213,3 +215,57 @@ force 5 E 0 -100
     on_1 = forces["1"]
     assert np.hypot(*on_1) > 0
     assert result.power_residual < 1e-9
+
+
+def test_solution_records_its_inputs_and_is_solved_there():
+    # SQUARE turned 0.4 rad: by virtual power at that pose, M_b·ω1 + P3·v_E = 0, with v_E
+    # from the kinematics alone (no force solve)
+    plan = make_plan(analyze(parse_edgelist(SQUARE.strip().splitlines())))
+    assert solve_forces(plan).inputs == (0.0,)
+    result = solve_forces(plan, (0.4,))
+    assert result.inputs == (0.4,)
+    state = solve_pose(plan, (0.4,))
+    m_b = -float(np.array([1000.0, 0.0]) @ state.points["E"].velocity) / 10.0
+    assert result.balancing_moment["1"] == pytest.approx(m_b, rel=1e-9)
+    assert abs(m_b - 50.0) > 1.0  # not the sketch's answer
+
+
+def test_sliding_driver_balancing_is_a_force_along_its_slide():
+    # the pushed block: 30 N along the slide (not a moment), kept under balancing_moment too
+    result = forces_of("driver 1 v=2\n0 1 P S angle=0 friction=0.3\npoint S 0 0\nforce 1 S 0 -100")
+    assert result.balancing_slide_force == {"1": pytest.approx(30.0)}
+    assert result.balancing_moment["1"] == result.balancing_slide_force["1"]
+    assert forces_to_dict(result)["balancing_slide_force"] == {"1": pytest.approx(30.0)}
+    assert forces_of(SQUARE).balancing_slide_force == {}
+
+
+def test_two_contacts_of_a_turning_guide_are_across_it_at_the_pose():
+    # block 2 on crank pin B slides in the slot of rocker 3 (through B and C), contacts 0.05 m
+    # apart; a load on the block off its pin makes a couple in the slot. Away from the sketch
+    # the slot has turned: both contact forces are across it there, and with the contacts
+    # ∓0.025 m along it they add up to the reaction and give its couple.
+    text = """
+driver 1 omega=1
+0 1 R A
+1 2 R B
+2 3 P B angle=90 span=0.05
+3 0 R C
+point A 0 0
+point B 0 0.1
+point C 0 -0.2
+point K 0.02 0.1 on=2
+force 2 K 30 50
+"""
+    plan = make_plan(analyze(parse_edgelist(text.strip().splitlines())))
+    result = solve_forces(plan, (0.6,))
+    (slot,) = [r for r in result.reactions if r.contacts is not None]
+    state = solve_pose(plan, (0.6,))
+    u = state.points["B"].position - np.array([0.0, -0.2])
+    u = u / np.hypot(*u)
+    n1, n2 = slot.contacts
+    assert abs(float(n1 @ u)) < 1e-9 and abs(float(n2 @ u)) < 1e-9
+    np.testing.assert_allclose(n1 + n2, slot.force, atol=1e-9)
+    half = 0.025
+    couple = half * float(u[0] * (n2 - n1)[1] - u[1] * (n2 - n1)[0])
+    assert couple == pytest.approx(slot.couple, rel=1e-9, abs=1e-9)
+    assert abs(slot.couple) > 0.1

@@ -66,6 +66,61 @@ def _arrows(ax) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     }
 
 
+def _components(ax) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """The drawn terms of the dyads' equations: gid -> (tail, tip), drawing units."""
+    return {
+        t.get_gid(): (np.asarray(t.xyann, float), np.asarray(t.xy, float))
+        for t in ax.texts
+        if isinstance(t, Annotation) and (t.get_gid() or "").startswith(("rel:", "comp:"))
+    }
+
+
+def _component_labels(ax) -> dict[str, str]:
+    return {
+        t.get_gid(): t.get_text()
+        for t in ax.texts
+        if not isinstance(t, Annotation) and (t.get_gid() or "").startswith(("rel:", "comp:"))
+    }
+
+
+def _check_components(ax, scale: float) -> None:
+    """Every term starts and ends at a point's image (or its partner), labelled with its gid."""
+    images = [np.zeros(2)] + [tip for _, tip in _arrows(ax).values()]
+    size = max([1.0] + [float(np.abs(p).max()) for p in images])
+
+    def at_image(p: np.ndarray) -> bool:
+        return any(np.linalg.norm(p - q) <= 1e-7 * size for q in images)
+
+    drawn = _components(ax)
+    labels = _component_labels(ax)
+    assert set(drawn) <= set(labels)
+    for gid in labels:
+        kind, _, key = gid.partition(":")
+        head, _, sub = key.partition("_")
+        if kind == "rel":
+            assert head == "v"
+            if gid in drawn:
+                tail, tip = drawn[gid]
+                assert at_image(tail) and at_image(tip), gid
+            continue
+        assert head in ("a^n", "a^t", "a^k", "a^r"), gid
+        first = {"a^t": "a^n", "a^r": "a^k"}.get(head)
+        if first is None:
+            continue
+        one, two = drawn.get(f"comp:{first}_{sub}"), drawn.get(gid)
+        assert f"comp:{first}_{sub}" in labels
+        if one is not None:
+            assert at_image(one[0]), gid
+        if two is not None:
+            assert at_image(two[1]), gid
+        if one is not None and two is not None:
+            assert np.allclose(one[1], two[0], atol=1e-7 * size)
+        if one is None and two is not None:
+            assert at_image(two[0]), gid
+        if two is None and one is not None:
+            assert at_image(one[1]), gid
+
+
 def _is_png(path: Path) -> bool:
     data = path.read_bytes()
     return len(data) > len(PNG_SIGNATURE) and data.startswith(PNG_SIGNATURE)
@@ -170,6 +225,7 @@ def test_fixture_figures(path: Path, tmp_path: Path) -> None:
             assert np.allclose(tail, 0.0)
             assert np.allclose(tip * scale, vec, atol=1e-9 * max(biggest, 1.0))
             assert labels[point] == point.lower()
+        _check_components(pax, scale)
 
 
 @pytest.fixture(scope="module")
@@ -214,6 +270,189 @@ def test_acceleration_polygon_pole_is_pi(fourbar_2_4) -> None:
     ax = acceleration_polygon(plan, state).axes[0]
     assert _texts(ax, "label:")["pole"] == "π"
     assert "μ_a" in ax.get_title() and "(m/s²)/unit" in ax.get_title()
+
+
+# ---------------------------------------------------------------- relative vectors, components
+
+
+def _vec(ax, gid: str, scale: float) -> tuple[np.ndarray, np.ndarray]:
+    """(tail, vector) of a drawn term, m/s or m/s²."""
+    tail, tip = _components(ax)[gid]
+    return tail * scale, (tip - tail) * scale
+
+
+def _zero_term(ax, gid: str) -> None:
+    """A zero term: no arrow, a dot, and its label ``… = 0``."""
+    assert gid not in _components(ax)
+    assert "= 0" in _component_labels(ax)[gid]
+    assert any(ln.get_gid() == gid for ln in ax.lines)
+
+
+def test_velocity_polygon_relative_vectors_of_problem_2_4(fourbar_2_4) -> None:
+    # by hand: B = (0, 0.1) turns about A at ω1 = 20 CCW: v_B = ω1·J(AB) = (−2, 0) m/s.
+    # AB ∥ DC and BC ⟂ both: v_B and v_C are both horizontal, the coupler's instant centre
+    # is at infinity, ω2 = 0: v_CB = ω2·l_BC = 0 and v_C = v_B. From d (= p, D is on the
+    # ground): v_CD = v_C − 0 = (−2, 0), |v_CD| = 2 m/s ⊥ CD (CD vertical) and ω3 = 2/0.4 = 5.
+    _, plan, state = fourbar_2_4
+    ax = velocity_polygon(plan, state).axes[0]
+    scale = _scale(ax)
+    assert set(_component_labels(ax)) == {"rel:v_CB", "rel:v_CD"}
+    _zero_term(ax, "rel:v_CB")
+    tail, v_cd = _vec(ax, "rel:v_CD", scale)
+    assert np.allclose(tail, (0.0, 0.0), atol=1e-12)
+    assert np.allclose(v_cd, (-2.0, 0.0), atol=1e-9)
+    assert np.allclose(_components(ax)["rel:v_CD"][1], _arrows(ax)["C"][1])  # it ends at c
+    assert "v_{CD}" in _component_labels(ax)["rel:v_CD"]
+
+
+def test_acceleration_polygon_components_of_problem_2_4(fourbar_2_4) -> None:
+    # by hand (ε1 = 0, ω2 = 0, ω3 = 5 from the velocities):
+    #   a_B = −ω1²·AB = −400·(0, 0.1) = (0, −40), toward A.
+    #   from b': a^n_CB = ω2²·l_BC = 0; a^τ_CB ⊥ BC (BC horizontal: vertical), unknown.
+    #   from d' = π: a^n_CD = ω3²·l_CD = 25·0.4 = 10 m/s² from C toward D: (0, −10);
+    #   a^τ_CD ⊥ CD (horizontal), unknown.
+    #   a_B + a^τ_CB·(0, 1) = a^n_CD + a^τ_CD·(1, 0):  x: 0 = a^τ_CD;  y: −40 + a^τ_CB = −10,
+    #   so a^τ_CB = 30 m/s² upward (ε2 = 30/0.4 = 75) and a^τ_CD = 0 (ε3 = 0); a_C = (0, −10).
+    _, plan, state = fourbar_2_4
+    ax = acceleration_polygon(plan, state).axes[0]
+    scale = _scale(ax)
+    assert set(_component_labels(ax)) == {
+        "comp:a^n_CB",
+        "comp:a^t_CB",
+        "comp:a^n_CD",
+        "comp:a^t_CD",
+    }
+    _zero_term(ax, "comp:a^n_CB")
+    _zero_term(ax, "comp:a^t_CD")
+    b = np.array([0.0, -40.0])
+    tail, t_cb = _vec(ax, "comp:a^t_CB", scale)
+    assert np.allclose(tail, b, atol=1e-9)  # from b' (a^n_CB = 0 adds nothing)
+    assert np.allclose(t_cb, (0.0, 30.0), atol=1e-9)
+    tail, n_cd = _vec(ax, "comp:a^n_CD", scale)
+    assert np.allclose(tail, (0.0, 0.0), atol=1e-12)  # from d' = π
+    assert np.allclose(n_cd, (0.0, -10.0), atol=1e-9)
+    # the polygon closes: b' + a^n_CB + a^τ_CB = c' = d' + a^n_CD + a^τ_CD
+    c = _arrows(ax)["C"][1] * scale
+    assert np.allclose(b + 0.0 + t_cb, c, atol=1e-9)
+    assert np.allclose(np.zeros(2) + n_cd + 0.0, c, atol=1e-9)
+    assert np.allclose(c, (0.0, -10.0), atol=1e-9)
+    labels = _component_labels(ax)
+    assert "a^{n}_{CD}" in labels["comp:a^n_CD"] and r"a^{\tau}_{CB}" in labels["comp:a^t_CB"]
+    entries = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert entries[0] == "absolute, from π" and len(entries) == 3
+
+
+@pytest.fixture(scope="module")
+def slotted_exam():
+    report = analyze(read_edgelist(FIXTURES / "exam_1_slotted_link.edges"))
+    plan = make_plan(report)
+    return report, plan, solve_pose(plan)
+
+
+def _slotted_by_hand():
+    """Exam problem 1 by hand: a = 0.1, ω = 10 CCW; A = (0, 0), B = (a, 0), C = (0, −a).
+
+    Block 2 on the crank pin B slides along slotted link 3, which turns about C; the slot
+    is the line CB, u = (1, 1)/√2, n = u turned +90° = (−1, 1)/√2.
+    """
+    a, w = 0.1, 10.0
+    AB, CB = np.array([a, 0.0]), np.array([a, a])
+    u = CB / np.hypot(*CB)
+    n = np.array([-u[1], u[0]])
+    l_cb = math.hypot(*CB)  # a√2
+    v_b2 = w * np.array([-AB[1], AB[0]])  # (0, 1): v_B1 = v_B2 (pin)
+    # v_B3 = v_B2 + v_B3B2, v_B3 ⊥ CB (along n), v_B3B2 ∥ CB (along u):
+    v_b3 = (v_b2 @ n) * n  # (−0.5, 0.5), |v_B3| = a·ω/√2
+    v_rel = v_b3 - v_b2  # (−0.5, −0.5), a·ω/√2 along −u
+    w3 = (v_b3 @ n) / l_cb  # = ω/2 = 5, counter-clockwise
+    # Coriolis: 2·ω3·v_rel, v_rel turned 90° in the sense of ω3 (CCW: +90°)
+    a_k = 2.0 * w3 * np.array([-v_rel[1], v_rel[0]])
+    a_b2 = -(w**2) * AB  # (−10, 0)
+    a_n = -(w3**2) * CB  # a^n_B3C: ω3²·l_CB from B toward C
+    # a_n + t·n = a_b2 + a_k + r·u: the two unknowns t (a^τ_B3C) and r (a^r_B3B2)
+    t, r = np.linalg.solve(np.column_stack([n, -u]), a_b2 + a_k - a_n)
+    return {
+        "w3": w3, "v_b2": v_b2, "v_b3": v_b3, "v_rel": v_rel, "a_k": a_k, "a_b2": a_b2,
+        "a_n": a_n, "t": t, "r": r, "u": u, "n": n,
+    }  # fmt: skip
+
+
+def test_velocity_polygon_of_the_slotted_link(slotted_exam) -> None:
+    h = _slotted_by_hand()
+    assert h["w3"] == pytest.approx(5.0)  # ω/2
+    _, plan, state = slotted_exam
+    ax = velocity_polygon(plan, state).axes[0]
+    scale = _scale(ax)
+    assert set(_component_labels(ax)) == {"rel:v_B3C", "rel:v_B3B2"}
+    tail, v_rel = _vec(ax, "rel:v_B3B2", scale)
+    assert np.allclose(tail, h["v_b2"], atol=1e-9)  # from b (= b2 = b1)
+    assert np.allclose(v_rel, h["v_rel"], atol=1e-9)  # ∥ the slot
+    assert abs(v_rel[0] * h["u"][1] - v_rel[1] * h["u"][0]) < 1e-9
+    tail, v_b3c = _vec(ax, "rel:v_B3C", scale)
+    assert np.allclose(tail, 0.0, atol=1e-12) and np.allclose(v_b3c, h["v_b3"], atol=1e-9)
+    assert np.allclose(_arrows(ax)["B3"][1] * scale, h["v_b3"], atol=1e-9)
+
+
+def test_acceleration_polygon_coriolis_of_the_slotted_link(slotted_exam) -> None:
+    h = _slotted_by_hand()
+    # printed: Coriolis a·ω²/√2, ε3 = 0
+    assert math.hypot(*h["a_k"]) == pytest.approx(0.1 * 10.0**2 / math.sqrt(2))
+    assert h["t"] == pytest.approx(0.0, abs=1e-12)
+    _, plan, state = slotted_exam
+    ax = acceleration_polygon(plan, state).axes[0]
+    scale = _scale(ax)
+    assert set(_component_labels(ax)) == {
+        "comp:a^n_B3C",
+        "comp:a^t_B3C",
+        "comp:a^k_B3B2",
+        "comp:a^r_B3B2",
+    }
+    tail, a_k = _vec(ax, "comp:a^k_B3B2", scale)
+    assert np.allclose(tail, h["a_b2"], atol=1e-9)  # from b' (the crank pin's a)
+    # magnitude 2·ω3·v_rel, direction v_rel turned 90° counter-clockwise (ω3 > 0)
+    v_rel = math.hypot(*h["v_rel"])
+    assert math.hypot(*a_k) == pytest.approx(2 * h["w3"] * v_rel, rel=1e-9)
+    turned = np.array([-h["v_rel"][1], h["v_rel"][0]]) / v_rel
+    assert np.allclose(a_k / math.hypot(*a_k), turned, atol=1e-9)
+    assert np.allclose(a_k, (5.0, -5.0), atol=1e-9)
+    tail, a_r = _vec(ax, "comp:a^r_B3B2", scale)
+    assert np.allclose(tail, h["a_b2"] + h["a_k"], atol=1e-9)  # from the point k
+    assert np.allclose(a_r, h["r"] * h["u"], atol=1e-9)  # ∥ the slot, 2.5·(1, 1)
+    tail, a_n = _vec(ax, "comp:a^n_B3C", scale)
+    assert np.allclose(tail, 0.0, atol=1e-12) and np.allclose(a_n, h["a_n"], atol=1e-9)
+    _zero_term(ax, "comp:a^t_B3C")  # ε3 = 0
+    b3 = _arrows(ax)["B3"][1] * scale
+    assert np.allclose(h["a_b2"] + a_k + a_r, b3, atol=1e-9)
+    assert np.allclose(a_n, b3, atol=1e-9)
+    nodes = {ln.get_gid(): ln for ln in ax.lines if (ln.get_gid() or "").startswith("node:")}
+    k = np.array([nodes["node:k_B3B2"].get_xdata()[0], nodes["node:k_B3B2"].get_ydata()[0]])
+    assert np.allclose(k * scale, h["a_b2"] + h["a_k"], atol=1e-9)
+    assert "a^{k}_{B3B2}" in _component_labels(ax)["comp:a^k_B3B2"]
+
+
+def test_guide_point_without_a_marker_is_added(slotted_exam) -> None:
+    # without the marker B3, the point of the slotted link under B still has its image b3:
+    # by hand v_B3 = (−0.5, 0.5) m/s (see _slotted_by_hand)
+    path = FIXTURES / "exam_1_slotted_link.edges"
+    lines = [ln for ln in path.read_text().splitlines() if not ln.startswith("point B3 ")]
+    from structure.edgelist import parse_edgelist
+
+    plan = make_plan(analyze(parse_edgelist(lines)))
+    ax = velocity_polygon(plan, solve_pose(plan)).axes[0]
+    scale = _scale(ax)
+    assert np.allclose(_arrows(ax)["B3"][1] * scale, _slotted_by_hand()["v_b3"], atol=1e-9)
+    assert _texts(ax, "label:")["B3"] == "b3"
+    tail, v_rel = _vec(ax, "rel:v_B3B2", scale)
+    assert np.allclose((tail + v_rel), _slotted_by_hand()["v_b3"], atol=1e-9)
+
+
+def test_triad_has_only_absolute_vectors() -> None:
+    # the eight-bar: the dyad II(2,3) (pin C, from B and D) has its terms, the triad none
+    _, plan, state = _solved(FIXTURES / "eightbar_triad.edges")
+    ax = velocity_polygon(plan, state).axes[0]
+    assert set(_component_labels(ax)) == {"rel:v_CB", "rel:v_CD"}
+    ax = acceleration_polygon(plan, state).axes[0]
+    assert {g.split("_")[-1] for g in _component_labels(ax)} == {"CB", "CD"}
 
 
 def test_save_formats(fourbar_2_4, tmp_path: Path) -> None:

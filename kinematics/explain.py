@@ -57,9 +57,23 @@ from structure.explain import (
 from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
-from .equations import rotate
 from .forces import ForceSolution, Reaction
 from .plan import DriverStep, GroupStep, SolvePlan
+from .polygons import (
+    Dyad,
+    Side,
+    VectorEquation,
+    coriolis,
+    dyad_of,
+    link_rates,
+    point_at,
+    point_label,
+    point_motion,
+    relative_label,
+    slide_angle,
+    slide_direction,
+    vector_equations,
+)
 from .solve import KinematicState, solve_pose
 
 __all__ = ["PHRASES", "angle_of", "explain_forces", "explain_kinematics"]
@@ -353,15 +367,6 @@ def _paren(x: float) -> Math:
     return Math(text, text)
 
 
-def _label(point: str, link: str | None = None) -> str:
-    """``C``; ``B3`` for the point of link 3 at B; ``T4(5)``, ``B(v1)`` where that would blur."""
-    if link is None:
-        return point
-    if link.isdigit() and not point[-1:].isdigit():
-        return point + link
-    return f"{point}({link})"
-
-
 def _two(a: str, b: str) -> str:
     """Two point names in the textbook's order (``AB``, ``BC``, ``CD``)."""
     return a + b if a <= b else b + a
@@ -517,34 +522,6 @@ class _Ctx:
                 if eq.kind == "SLIDE":
                     self.slide_on[eq.pair] = eq.b  # the reaction is (eq.a, eq.b): see _reactions
 
-    def rates(self, link: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``q, q̇, q̈`` of a link (zeros for the ground)."""
-        if link == self.ground or link not in self.state.links:
-            z = np.zeros(3)
-            return z, z, z
-        s = self.state.links[link]
-        return np.asarray(s.q), np.asarray(s.qd), np.asarray(s.qdd)
-
-    def omega(self, link: str) -> float:
-        return float(self.rates(link)[1][2])
-
-    def epsilon(self, link: str) -> float:
-        return float(self.rates(link)[2][2])
-
-    def at(self, link: str, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Position, velocity, acceleration of the point of ``link`` at sketch point ``name``."""
-        q, qd, qdd = self.rates(link)
-        r = rotate(float(q[2]), np.array(self.m.coordinates(name), dtype=float))
-        jr = _j(r)
-        return q[:2] + r, qd[:2] + qd[2] * jr, qdd[:2] + qdd[2] * jr - qd[2] ** 2 * r
-
-    def motion(self, link: str, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Velocity and acceleration of the point of ``link`` now at world position ``p``."""
-        q, qd, qdd = self.rates(link)
-        r = p - q[:2]
-        jr = _j(r)
-        return qd[:2] + qd[2] * jr, qdd[:2] + qdd[2] * jr - qd[2] ** 2 * r
-
     def pin(self, name: str) -> _At:
         """A pin (or another named point) where the solve put it."""
         return _At(name, np.asarray(self.state.points[name].position))
@@ -555,11 +532,11 @@ class _Ctx:
         Once the slide has moved from the sketch, its point on ``link`` has parted from
         the one named ``name``; it is written ``E3`` (the point of link 3 at E) then.
         """
-        xy = self.at(link, name)[0]
+        xy = point_at(self.plan, self.state, link, name)[0]
         named = self.state.points.get(name)
         if named is None or _norm(np.asarray(named.position) - xy) <= 1e-9 * (1.0 + _norm(xy)):
             return _At(name, xy)
-        return _At(_label(name, link), xy)
+        return _At(point_label(name, link), xy)
 
     def slide_at(self, pair_id: int) -> _At:
         """Where the reaction of slide ``pair_id`` acts (see :meth:`slide_point`)."""
@@ -567,7 +544,9 @@ class _Ctx:
         return self.slide_point(pair.point or "?", self.slide_on.get(pair_id, pair.b))
 
     def dist(self, link: str, a: str, b: str) -> float:
-        return _norm(self.at(link, a)[0] - self.at(link, b)[0])
+        """Distance between the points ``a`` and ``b`` of ``link``."""
+        pa, pb = (point_at(self.plan, self.state, link, x)[0] for x in (a, b))
+        return _norm(pa - pb)
 
     def points_of(self, link: str) -> list[str]:
         """Named points fixed to ``link``: its pairs' points and its markers."""
@@ -584,18 +563,17 @@ class _Ctx:
     def guide(self, pair_id: int) -> tuple[np.ndarray, str]:
         """Unit direction of a slide at the pose and its name: ``BC``, ``x``, ``(30°)``."""
         pair = self.m.pair(pair_id)
-        turned = pair.a if pair.a != self.ground else pair.b
-        theta = float(self.rates(turned)[0][2]) + (pair.angle or 0.0)
-        u = np.array([math.cos(theta), math.sin(theta)])
+        u = slide_direction(self.plan, self.state, pair_id)
         if pair.point is not None and self.m.coordinates(pair.point) is not None:
-            s = self.at(turned, pair.point)[0]
+            turned = pair.a if pair.a != self.ground else pair.b
+            s = point_at(self.plan, self.state, turned, pair.point)[0]
             for link in pair.links:
                 for q in self.points_of(link):
-                    d = self.at(link, q)[0] - s
+                    d = point_at(self.plan, self.state, link, q)[0] - s
                     size = _norm(d)
                     if q != pair.point and size > 1e-9 and abs(_cross(u, d)) <= 1e-9 * size:
                         return u, _two(pair.point, q)
-        folded = math.degrees(theta) % 180.0
+        folded = math.degrees(slide_angle(self.plan, self.state, pair_id)) % 180.0
         if min(folded, 180.0 - folded) <= 1e-6:
             return u, "x"
         if abs(folded - 90.0) <= 1e-6:
@@ -607,6 +585,12 @@ class _Ctx:
         if abs(value) <= 1e-9:
             return ""
         return " (" + self.doc.word("ccw" if value > 0 else "cw") + ")"
+
+
+def _turning(ctx: _Ctx, link: str) -> tuple[float, float]:
+    """ω and ε of a link (zeros for the ground)."""
+    _, qd, qdd = link_rates(ctx.plan, ctx.state, link)
+    return float(qd[2]), float(qdd[2])
 
 
 # ============================================================================ kinematics
@@ -624,11 +608,11 @@ def _known(
     pivot = ctx.pivot.get(k)
     if pivot == x:
         return [ZERO, f" ({doc.word('on_ground')})"]
-    where = ctx.at(k, x)[0] if where is None else where
-    v, a = ctx.motion(k, where)
+    where = point_at(ctx.plan, ctx.state, k, x)[0] if where is None else where
+    v, a = point_motion(ctx.plan, ctx.state, k, where)
     if pivot is not None:
-        length = _norm(where - ctx.at(k, pivot)[0])
-        w, e = ctx.omega(k), ctx.epsilon(k)
+        length = _norm(where - point_at(ctx.plan, ctx.state, k, pivot)[0])
+        w, e = _turning(ctx, k)
         if order == 1:
             speed = _times_length(_w(k), w, pivot, x, length, "m/s")
             return [_f("{p}, {t}", p=_perp(pivot, x), t=speed)]
@@ -667,168 +651,67 @@ def _to(a: str, b: str) -> Math:
     return Math(f"{a}→{b}", rf"{a} \to {b}")
 
 
-@dataclass
-class _Side:
-    """One way to reach the common point X of a dyad.
-
-    ``R``: X of ``link`` turns about ``base``, a pin whose motion is known
-    through link ``known``. ``P``: X of ``link`` slides along a guide of
-    ``guide_link`` (pair ``pair``); the guide's point at X is known through
-    ``known`` (the guide link itself, or the known link its pin at X joins).
-    ``G``: the guide is the ground, so X of ``link`` just moves along it.
-    """
-
-    kind: str
-    link: str
-    known: str
-    base: str = ""
-    guide_link: str = ""
-    pair: int = 0
-
-
-@dataclass
-class _Dyad:
-    """A dyad's vector equation: the common point, the link in its symbol, the two sides."""
-
-    x: str
-    where: np.ndarray  # X's position at the pose
-    lhs_link: str | None  # None: the pin common to both links (v_C)
-    sides: list[_Side]
-    la: str = ""  # a slide inside: the link whose pin is X
-    links: tuple[str, ...] = ()
-
-
-def _arm(ctx: _Ctx, d: _Dyad, side: _Side) -> float:
-    """Distance from a pin side's base to X."""
-    return _norm(d.where - ctx.at(side.link, side.base)[0])
-
-
-def _side(ctx: _Ctx, link: str, gp: GroupPair) -> _Side:
-    other = gp.links[1]
-    if gp.kind is PairKind.R:
-        return _Side("R", link, other, base=gp.point or "?")
-    return _Side("G" if other == ctx.ground else "P", link, other, guide_link=other, pair=gp.pair)
-
-
-def _dyad(ctx: _Ctx, g: AssurGroup | None) -> _Dyad | None:
-    """The dyad's two ways to its common point, or None for a group solved as a whole."""
-    if g is None or len(g.links) != 2 or len(g.internal_pairs) != 1:
-        return None
-    if any(link not in ctx.state.links for link in g.links):
-        return None  # a virtual link the solve did not keep (a mesh followed by its rolling)
-    (mid,) = g.internal_pairs
-    ext: dict[str, GroupPair] = {}
-    for p in g.external_pairs:
-        if p.links[0] in ext:
-            return None
-        ext[p.links[0]] = p
-    if set(ext) != set(g.links) or any(
-        p.kind is PairKind.H or p.point is None or ctx.m.coordinates(p.point) is None
-        for p in g.pairs
-    ):
-        return None
-    if mid.kind is PairKind.R:
-        x = mid.point or "?"
-        d = _Dyad(x, ctx.at(g.links[0], x)[0], None, [], links=g.links)
-        d.sides = [_side(ctx, link, ext[link]) for link in g.links]
-    else:
-        pinned = [link for link in g.links if ext[link].kind is PairKind.R]
-        if not pinned:
-            return None
-        u, _ = ctx.guide(mid.pair)
-        s = ctx.at(g.links[0], mid.point or "")[0]
-
-        def off_line(link: str) -> float:
-            return abs(_cross(u, ctx.at(ext[link].links[1], ext[link].point or "")[0] - s))
-
-        la = min(pinned, key=off_line)  # the block: its pin on the slide line if either is
-        lb = g.links[1] if la == g.links[0] else g.links[0]
-        x = ext[la].point or "?"
-        d = _Dyad(x, ctx.at(la, x)[0], lb, [], la, g.links)
-        d.sides = [
-            _side(ctx, lb, ext[lb]),
-            _Side("P", lb, ext[la].links[1], guide_link=la, pair=mid.pair),
-        ]
-    if any(side.kind == "R" and _arm(ctx, d, side) <= 1e-12 for side in d.sides):
-        return None
-    return d
-
-
-def _lhs(d: _Dyad) -> str:
-    return _label(d.x, d.lhs_link)
-
-
-def _rel_sub(d: _Dyad, side: _Side) -> str:
-    """Subscript of the relative term: ``CB`` (X about B) or ``B3B2`` (X of 3 along 2)."""
-    if side.kind == "R":
-        return _lhs(d) + side.base
-    return _label(d.x, side.link) + _label(d.x, side.guide_link)
-
-
-def _guide_known(ctx: _Ctx, d: _Dyad, side: _Side, order: int) -> list:
+def _guide_known(ctx: _Ctx, d: Dyad, side: Side, order: int) -> list:
     """What is known of the guide's point at X (through the pin at X for a slide inside)."""
-    label = _label(d.x, side.guide_link)
+    label = point_label(d.x, side.guide_link)
     if side.guide_link == d.la:
         head = ctx.doc.say("same_pin", p=d.x, la=d.la, k=side.known)
         return [*head, *_known(ctx, d.x, side.known, label, order, d.where)]
     return _known(ctx, d.x, side.guide_link, label, order, d.where)
 
 
-def _equation(ctx: _Ctx, d: _Dyad, letter: str) -> tuple[Math, list[list]]:
-    """The vector equation (``v`` or ``a``) and what is known of each of its terms."""
-    order = 1 if letter == "v" else 2
-    lhs = _vec(letter, _lhs(d))
-    chains: list[Math] = []
+def _normal_text(ctx: _Ctx, d: Dyad, side: Side, length: float) -> Math:
+    """The normal acceleration of X about a pin side's base: ``C→B, ω2²·l_BC = …``."""
+    w = _turning(ctx, side.link)[0]
+    normal = _times_length(_w(side.link), w, side.base, d.x, length, "m/s²", square=True)
+    return _f("{to}, {n}", to=_to(d.x, side.base), n=normal)
+
+
+def _equation(ctx: _Ctx, eq: VectorEquation) -> tuple[Math, list[list]]:
+    """The vector equation (of velocities or accelerations) and what is known of its terms.
+
+    Each way to X is its known point's vector, then the terms of
+    :func:`~kinematics.polygons.vector_equations`: one known (``a^n``, ``a^k``)
+    for accelerations, and last the one whose size is unknown (``⊥`` the arm
+    or ``∥`` the guide).
+    """
+    d, order = eq.dyad, eq.order
+    letter = "v" if order == 1 else "a"
+    lhs = _vec(letter, eq.x)
+    chains = {c.side: c for c in eq.chains}
+    sums: list[Math] = []
     items: list[list] = []
     for side in d.sides:
         if side.kind == "G":
             items.append([lhs, ": ", _f("{p}, ?", p=_par(ctx.guide(side.pair)[1]))])
             continue
-        sub = _rel_sub(d, side)
+        chain = chains[side]
+        base = _vec(letter, chain.start)
+        terms = [_vec(t.letter, t.sub, t.sup) for t in chain.terms]
+        sums.append(math_join([base, *terms], " + "))
         if side.kind == "R":
-            base = _vec(letter, side.base)
             items.append([base, ": ", *_known(ctx, side.base, side.known, side.base, order)])
-            if order == 1:
-                chains.append(_f("{b} + {r}", b=base, r=_vec("v", sub)))
-                items.append([_vec("v", sub), ": ", _f("{p}, ?", p=_perp(side.base, d.x))])
-                continue
-            an, at = _vec("a", sub, "n"), _vec("a", sub, "τ")
-            chains.append(_f("{b} + {n} + {t}", b=base, n=an, t=at))
-            w, length = ctx.omega(side.link), _arm(ctx, d, side)
-            normal = _times_length(_w(side.link), w, side.base, d.x, length, "m/s²", square=True)
-            items.append([an, ": ", _f("{to}, {n}", to=_to(d.x, side.base), n=normal)])
-            items.append([at, ": ", _f("{p}, ?", p=_perp(side.base, d.x))])
-            continue
-        base = _vec(letter, _label(d.x, side.guide_link))
-        name = ctx.guide(side.pair)[1]
-        items.append([base, ": ", *_guide_known(ctx, d, side, order)])
-        if order == 1:
-            chains.append(_f("{b} + {r}", b=base, r=_vec("v", sub)))
-            items.append([_vec("v", sub), ": ", _f("{p}, ?", p=_par(name))])
-            continue
-        ak, ar = _vec("a", sub, "k"), _vec("a", sub, "r")
-        chains.append(_f("{b} + {k} + {r}", b=base, k=ak, r=ar))
-        items.append([ak, ": ", *_coriolis_text(ctx, d, side)])
-        items.append([ar, ": ", _f("{p}, ?", p=_par(name))])
-    return (math_join([lhs, *chains], " = ") if chains else lhs), items
+            unknown = _perp(side.base, d.x)
+            if order == 2:
+                length = _norm(d.where - chain.start_where)
+                items.append([terms[0], ": ", _normal_text(ctx, d, side, length)])
+        else:
+            items.append([base, ": ", *_guide_known(ctx, d, side, order)])
+            unknown = _par(ctx.guide(side.pair)[1])
+            if order == 2:
+                items.append([terms[0], ": ", *_coriolis_text(ctx, d, side)])
+        items.append([terms[-1], ": ", _f("{p}, ?", p=unknown)])
+    return (math_join([lhs, *sums], " = ") if sums else lhs), items
 
 
-def _coriolis(ctx: _Ctx, d: _Dyad, side: _Side) -> tuple[float, np.ndarray, np.ndarray]:
-    """ω of the guide, the relative velocity, the Coriolis acceleration 2·ω×v_rel."""
-    wg = ctx.omega(side.guide_link)
-    vrel = ctx.motion(side.link, d.where)[0] - ctx.motion(side.guide_link, d.where)[0]
-    return wg, vrel, 2.0 * wg * _j(vrel)
-
-
-def _coriolis_text(ctx: _Ctx, d: _Dyad, side: _Side) -> list:
-    wg, vrel, ak = _coriolis(ctx, d, side)
-    symbols = [_w(side.guide_link), _mag("v", _rel_sub(d, side))]
+def _coriolis_text(ctx: _Ctx, d: Dyad, side: Side) -> list:
+    wg, vrel, ak = coriolis(ctx.plan, ctx.state, d, side)
+    sub = relative_label(d, side)
+    symbols = [_w(side.guide_link), _mag("v", sub)]
     value = _with_numbers("2·{0}·{1}", symbols, [abs(wg), _norm(vrel)], _q(_norm(ak), "m/s²"))
     if _norm(ak) <= 1e-9:
         return [value]
-    turned = ctx.doc.say(
-        "coriolis", vrel=_vec("v", _rel_sub(d, side)), w=_w(side.guide_link), value=value
-    )
+    turned = ctx.doc.say("coriolis", vrel=_vec("v", sub), w=_w(side.guide_link), value=value)
     return [*turned, " (", *ctx.doc.say("at", angle=_angle(ak)), ")"]
 
 
@@ -841,63 +724,61 @@ def _along(ctx: _Ctx, sym: Math, value: float, u: np.ndarray, unit: str) -> list
     ]
 
 
-def _solved(ctx: _Ctx, d: _Dyad, order: int) -> list[list]:
+def _solved(ctx: _Ctx, eq: VectorEquation) -> list[list]:
     """The unknown magnitudes the equation gives, and the rates of the links."""
     doc = ctx.doc
+    d, order = eq.dyad, eq.order
     unit, rate_unit = ("m/s", "rad/s") if order == 1 else ("m/s²", "rad/s²")
     letter = "v" if order == 1 else "a"
+    chains = {c.side: c for c in eq.chains}
     out: list[list] = []
     for side in d.sides:
         link = side.link
-        if side.kind == "R":
-            rate = ctx.omega(link) if order == 1 else ctx.epsilon(link)
-            length = _arm(ctx, d, side)
-            sym = _mag(letter, _rel_sub(d, side), "" if order == 1 else "τ")
-            value = abs(rate) * length
-            ratio = _with_numbers(
-                "{0}/{1}", [sym, _l(side.base, d.x)], [value, length], _q(rate, rate_unit)
-            )
-            r_sym = _w(link) if order == 1 else _e(link)
-            equation = _f("{s} = {v} ⇒ {r} = {q}", s=sym, v=_q(value, unit), r=r_sym, q=ratio)
-            out.append([equation, ctx.sense(rate)])
-            continue
-        u = ctx.guide(side.pair)[0]
-        own = ctx.motion(link, d.where)[order - 1]
         if side.kind == "G":
-            out.append(_along(ctx, _mag(letter, _lhs(d)), float(own @ u), u, unit))
+            u = slide_direction(ctx.plan, ctx.state, side.pair)
+            own = point_motion(ctx.plan, ctx.state, link, d.where)[order - 1]
+            out.append(_along(ctx, _mag(letter, eq.x), float(own @ u), u, unit))
             if order == 1:
                 out.append(doc.say("slides_ground", w=_w(link), link=link))
             continue
-        rel = own - ctx.motion(side.guide_link, d.where)[order - 1]
-        if order == 2:
-            rel = rel - _coriolis(ctx, d, side)[2]
-        sym = _mag(letter, _rel_sub(d, side), "" if order == 1 else "r")
-        out.append(_along(ctx, sym, float(rel @ u), u, unit))
+        chain = chains[side]
+        last = chain.terms[-1]  # the term of unknown size: v_CB, a^τ_CB, v_B3B2, a^r_B3B2
+        sym = _mag(last.letter, last.sub, last.sup)
+        if side.kind == "P":
+            u = slide_direction(ctx.plan, ctx.state, side.pair)
+            out.append(_along(ctx, sym, float(last.vector @ u), u, unit))
+            continue
+        rate = _turning(ctx, link)[order - 1]
+        length = _norm(d.where - chain.start_where)
+        value = abs(rate) * length
+        ratio = _with_numbers(
+            "{0}/{1}", [sym, _l(side.base, d.x)], [value, length], _q(rate, rate_unit)
+        )
+        r_sym = _w(link) if order == 1 else _e(link)
+        equation = _f("{s} = {v} ⇒ {r} = {q}", s=sym, v=_q(value, unit), r=r_sym, q=ratio)
+        out.append([equation, ctx.sense(rate)])
     for link in d.links:
         partner = _turns_with(d, link)
         if partner is None or partner == ctx.ground:
             continue
         if order == 1:
-            out.append(
-                doc.say("same_angle", w=_w(link), wk=_w(partner), value=_num(ctx.omega(link)))
-            )
+            value = _num(_turning(ctx, link)[0])
+            out.append(doc.say("same_angle", w=_w(link), wk=_w(partner), value=value))
         else:
-            out.append(
-                doc.say("same_angle_e", e=_e(link), ek=_e(partner), value=_num(ctx.epsilon(link)))
-            )
+            value = _num(_turning(ctx, link)[1])
+            out.append(doc.say("same_angle_e", e=_e(link), ek=_e(partner), value=value))
     if not any(s.kind == "G" for s in d.sides):
-        value = ctx.motion(d.lhs_link or d.links[0], d.where)[order - 1]
         out.append(
             [
-                _f("{s} = {v}", s=_mag(letter, _lhs(d)), v=_q(_norm(value), unit)),
+                _f("{s} = {v}", s=_mag(letter, eq.x), v=_q(_norm(eq.value), unit)),
                 ", ",
-                *doc.say("at", angle=_angle(value)),
+                *doc.say("at", angle=_angle(eq.value)),
             ]
         )
     return out
 
 
-def _turns_with(d: _Dyad, link: str) -> str | None:
+def _turns_with(d: Dyad, link: str) -> str | None:
     """The link whose rotation ``link`` shares through a prismatic pair (no pin side of its own)."""
     if any(s.kind == "R" and s.link == link for s in d.sides):
         return None
@@ -918,7 +799,7 @@ def _group_points(ctx: _Ctx, links: Sequence[str], pin_of: Mapping[str, str]) ->
         x = pin_of.get(ps.link)
         if marker is not None and marker.on == ps.link and x is not None and x != name:
             link = ps.link
-            w, e = ctx.omega(link), ctx.epsilon(link)
+            w, e = _turning(ctx, link)
             length = ctx.dist(link, x, name)
             sub, l_xm = name + x, _l(x, name)
             speed = _times_length(_w(link), w, x, name, length, "m/s")
@@ -960,7 +841,7 @@ def _link_values(ctx: _Ctx, links: Sequence[str]) -> None:
     for link in links:
         if link not in ctx.state.links:
             continue
-        w, e = ctx.omega(link), ctx.epsilon(link)
+        w, e = _turning(ctx, link)
         doc.item(
             *doc.say(
                 "link_value",
@@ -975,21 +856,24 @@ def _link_values(ctx: _Ctx, links: Sequence[str]) -> None:
         )
 
 
-def _explain_dyad(ctx: _Ctx, step: GroupStep, d: _Dyad) -> None:
+_ORDER_WORDS = {1: ("velocities", "two_unknowns"), 2: ("accelerations", "two_unknowns_a")}
+
+
+def _explain_dyad(ctx: _Ctx, step: GroupStep, equations: Sequence[VectorEquation]) -> None:
+    """A dyad: its velocity, then its acceleration equation (``equations``), each solved."""
     doc = ctx.doc
-    for order, title, closes in (
-        (1, "velocities", "two_unknowns"),
-        (2, "accelerations", "two_unknowns_a"),
-    ):
+    for eq in equations:
+        title, closes = _ORDER_WORDS[eq.order]
         doc.para(doc.word(title))
-        equation, items = _equation(ctx, d, "v" if order == 1 else "a")
+        equation, items = _equation(ctx, eq)
         doc.equation(equation)
         for row in items:
             doc.item(*row)
         doc.para(doc.word(closes))
-        for row in _solved(ctx, d, order):
+        for row in _solved(ctx, eq):
             doc.item(*row)
     _link_values(ctx, step.links)
+    d = equations[0].dyad
     pins: dict[str, str] = {}
     for side in d.sides:
         if side.kind == "R":
@@ -1012,7 +896,8 @@ def _explain_whole(ctx: _Ctx, step: GroupStep) -> None:
             a, b = gp.links
             point = gp.point or "?"
             if gp.kind is PairKind.R:
-                eq = _f("{a} = {b}", a=_vec("v", _label(point, a)), b=_vec("v", _label(point, b)))
+                same = [_vec("v", point_label(point, x)) for x in (a, b)]
+                eq = _f("{a} = {b}", a=same[0], b=same[1])
                 doc.item(*doc.say("pair_r", point=point, a=a, b=b, eq=eq))
                 pins.setdefault(a, point)
             else:
@@ -1112,16 +997,19 @@ def explain_kinematics(
     doc.title(*doc.say("kin_title", name=m.name or m.source))
     doc.para(doc.word("conventions"))
     _explain_drivers(ctx)
+    dyads: dict[str, list[VectorEquation]] = {}
+    for order in (1, 2):
+        for eq in vector_equations(plan, state, order):
+            dyads.setdefault(eq.label, []).append(eq)
     for k, step in enumerate(plan.steps, start=2):
         kind = f" {step.kind}" if step.kind else ""
         doc.heading(
             *doc.say("group_head", k=k, label=step.label, kind=kind, links=", ".join(step.links))
         )
-        d = _dyad(ctx, step.group)
-        if d is None:
-            _explain_whole(ctx, step)
+        if step.label in dyads:
+            _explain_dyad(ctx, step, dyads[step.label])
         else:
-            _explain_dyad(ctx, step, d)
+            _explain_whole(ctx, step)
     return render(doc, fmt)
 
 
@@ -1163,17 +1051,18 @@ def _applied_loads(ctx: _Ctx, velocities: _Ctx) -> list[_Load]:
         return _mag(letter, link if k == 1 else f"{link},{k}", sup)
 
     def force(label: Math, link: str, point: str, f: np.ndarray, key: str) -> None:
-        v = velocities.at(link, point)[1]
+        v = point_at(velocities.plan, velocities.state, link, point)[1]
         dot = math_join([_f("{f}·{v}", f=_paren(f[i]), v=_paren(v[i])) for i in (0, 1)], " + ")
         power = _f(
             "{s}·{v} = {d} = {p}", s=label, v=_vec("v", point), d=dot, p=_q(float(f @ v), "W")
         )
-        out.append(_Load(label, link, f, ctx.at(link, point)[0], 0.0, (power, float(f @ v))))
+        where = point_at(ctx.plan, ctx.state, link, point)[0]
+        out.append(_Load(label, link, f, where, 0.0, (power, float(f @ v))))
         fx, fy = number(f[0], 1e-6), number(f[1], 1e-6)
         doc.item(*doc.say(key, sym=label, point=point, link=link, fx=fx, fy=fy))
 
     def moment(label: Math, link: str, value: float, key: str) -> None:
-        w = velocities.omega(link)
+        w = _turning(velocities, link)[0]
         power = _power(label, _w(link), value, w)
         out.append(_Load(label, link, np.zeros(2), np.zeros(2), value, (power, value * w)))
         doc.item(*doc.say(key, sym=label, link=link, value=number(value, 1e-6)))
@@ -1188,10 +1077,10 @@ def _applied_loads(ctx: _Ctx, velocities: _Ctx) -> list[_Load]:
             mass, inertia = (float(x) for x in load.values)
             if _norm(gravity) > 0:
                 force(symbol("G", link), link, point, mass * gravity, "load_weight")
-            inertia_force = -mass * ctx.at(link, point)[2]
+            inertia_force = -mass * point_at(ctx.plan, ctx.state, link, point)[2]
             force(symbol("P", link, inertia_tag), link, point, inertia_force, "load_inertia")
             if inertia:
-                inertia_moment = -inertia * ctx.epsilon(link)
+                inertia_moment = -inertia * _turning(ctx, link)[1]
                 label = symbol("M", link, inertia_tag)
                 moment(label, link, inertia_moment, "load_inertia_m")
     return out
@@ -1431,7 +1320,7 @@ def _moment_of(point: str, source: str, target: str) -> Math:
     return Math(f"M_{point}(R_{sub})", rf"M_{{{point}}}(R_{{{sub}}})")
 
 
-def _dyad_forces(ctx: _Ctx, g: AssurGroup, d: _Dyad, loads: Mapping[str, list[_Load]]) -> None:
+def _dyad_forces(ctx: _Ctx, g: AssurGroup, d: Dyad, loads: Mapping[str, list[_Load]]) -> None:
     """The textbook's equations of a dyad, each solved for its unknowns with numbers."""
     doc = ctx.doc
     steps = _Steps(doc)
@@ -1555,7 +1444,7 @@ def _group_forces(
     listing = _commas([_rsym(p.links[1], p.links[0]), f" ({p.point})"] for p in pairs)
     if listing:
         doc.para(*doc.say("f_unknowns", list=listing))
-    d = None if whole else _dyad(ctx, g)
+    d = None if whole else dyad_of(ctx.plan, ctx.state, g)
     if g is not None and d is not None:
         _dyad_forces(ctx, g, d, loads)
     elif g is not None:
@@ -1611,7 +1500,7 @@ def _driver_forces(
         pid = ctx.slide.get(link)
         point = (ctx.m.pair(pid).point or "") if pid else ""
         _show_reaction(ctx, solution, ctx.ground, link, point, "P")
-        speed = float(vctx.rates(link)[1][:2] @ u)
+        speed = float(link_rates(vctx.plan, vctx.state, link)[1][:2] @ u)
         return sym, found, Math(f"v{link}", f"v_{{{link}}}"), speed
     pivot = drv.point or "?"
     a = ctx.pin(pivot).xy if pivot in ctx.state.points else np.asarray(drv.pivot)
@@ -1624,7 +1513,8 @@ def _driver_forces(
         t = math.radians(balance.values[0])
         u = np.array([math.cos(t), math.sin(t)])
         point = balance.point or ""
-        at = ctx.at(link, point)[0] if ctx.m.coordinates(point) is not None else a
+        known = ctx.m.coordinates(point) is not None
+        at = point_at(ctx.plan, ctx.state, link, point)[0] if known else a
         lever = _cross(at - a, u)
         sym = _mag("P", "cb")
         value = -ma / lever if abs(lever) > 1e-12 else math.nan
@@ -1649,7 +1539,8 @@ def _driver_forces(
         )
         on_driver = found * u
         speed_sym = _f("{v}·u", v=_vec("v", point))
-        power: _Power = (sym, found, speed_sym, float(vctx.at(link, point)[1] @ u))
+        speed = float(point_at(vctx.plan, vctx.state, link, point)[1] @ u)
+        power: _Power = (sym, found, speed_sym, speed)
     else:
         sym = _mag("M", "cb")
         m_pivot = _mag("M", pivot)
@@ -1660,7 +1551,7 @@ def _driver_forces(
         sense = doc.word("ccw" if found >= 0 else "cw")
         doc.item(*doc.say("f_mcb_value", sym=sym, value=number(found, 1e-6), sense=sense))
         on_driver = np.zeros(2)
-        power = (sym, found, _w(link), vctx.omega(link))
+        power = (sym, found, _w(link), _turning(vctx, link)[0])
     ground = -(_sum_force(loads) + on_driver)
     doc.para(*doc.say("f_ground", link=link))
     doc.equation(

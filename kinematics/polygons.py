@@ -62,6 +62,7 @@ __all__ = [
     "point_label",
     "point_motion",
     "relative_label",
+    "slide_angle",
     "slide_direction",
     "vector_equations",
 ]
@@ -94,31 +95,55 @@ def link_rates(
     return np.asarray(s.q, float), np.asarray(s.qd, float), np.asarray(s.qdd, float)
 
 
+def _motion(qd: np.ndarray, qdd: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Velocity and acceleration of a link's point at ``r`` (world axes) from the link's origin."""
+    jr = _j(r)
+    return qd[:2] + qd[2] * jr, qdd[:2] + qdd[2] * jr - qd[2] ** 2 * r
+
+
 def point_motion(
     plan: SolvePlan, state: KinematicState, link: str, p: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """Velocity and acceleration of the point of ``link`` now at world position ``p``."""
     q, qd, qdd = link_rates(plan, state, link)
-    r = np.asarray(p, float) - q[:2]
-    jr = _j(r)
-    return qd[:2] + qd[2] * jr, qdd[:2] + qdd[2] * jr - qd[2] ** 2 * r
+    return _motion(qd, qdd, np.asarray(p, float) - q[:2])
 
 
 def point_at(
     plan: SolvePlan, state: KinematicState, link: str, name: str
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Position, velocity, acceleration of the point of ``link`` at sketch point ``name``."""
-    q = link_rates(plan, state, link)[0]
-    p = q[:2] + rotate(float(q[2]), np.array(plan.mechanism.coordinates(name), dtype=float))
-    return (p, *point_motion(plan, state, link, p))
+    q, qd, qdd = link_rates(plan, state, link)
+    r = rotate(float(q[2]), np.array(plan.mechanism.coordinates(name), dtype=float))
+    return (q[:2] + r, *_motion(qd, qdd, r))
+
+
+def slide_angle(plan: SolvePlan, state: KinematicState, pair_id: int) -> float:
+    """Angle (rad) of the slide of P pair ``pair_id`` at the pose: its ``angle=`` turned.
+
+    The angle is the pair's ``angle=`` plus the turn of its moving link (of
+    the first link when neither is the ground).
+
+    >>> from structure.edgelist import parse_edgelist
+    >>> from structure.report import analyze
+    >>> from kinematics.plan import make_plan
+    >>> from kinematics.solve import solve_pose
+    >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "1 2 R B", "2 3 R C",
+    ...                     "3 0 P C angle=30", "point A 0 0", "point B 0 0.1", "point C 0.3 0"])
+    >>> plan = make_plan(analyze(m)); state = solve_pose(plan)
+    >>> (pid,) = [p.id for p in m.pairs if p.kind.value == "P"]
+    >>> round(math.degrees(slide_angle(plan, state, pid)), 9), slide_direction(plan, state, pid)
+    (30.0, array([0.8660254, 0.5      ]))
+    """
+    m = plan.mechanism
+    pair = m.pair(pair_id)
+    turned = pair.a if pair.a != m.ground else pair.b
+    return float(link_rates(plan, state, turned)[0][2]) + (pair.angle or 0.0)
 
 
 def slide_direction(plan: SolvePlan, state: KinematicState, pair_id: int) -> np.ndarray:
     """Unit direction of the slide of P pair ``pair_id`` at the pose (its ``angle=`` turned)."""
-    m = plan.mechanism
-    pair = m.pair(pair_id)
-    turned = pair.a if pair.a != m.ground else pair.b
-    theta = float(link_rates(plan, state, turned)[0][2]) + (pair.angle or 0.0)
+    theta = slide_angle(plan, state, pair_id)
     return np.array([math.cos(theta), math.sin(theta)])
 
 

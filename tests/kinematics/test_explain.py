@@ -16,6 +16,7 @@ import pytest
 from kinematics.explain import angle_of, explain_forces, explain_kinematics
 from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
+from kinematics.polygons import vector_equations
 from kinematics.solve import solve_pose
 from structure.cli import main
 from structure.edgelist import parse_edgelist, read_edgelist
@@ -166,6 +167,26 @@ def test_explanation_agrees_with_assur_kinematics(capsys, name):
     for link, (w, e) in found.items():
         assert w == pytest.approx(rates[link][0], rel=1e-5, abs=1e-9)
         assert e == pytest.approx(rates[link][1], rel=1e-5, abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    "name", ["ch2_2_4_fourbar", "exam_1_slotted_link", "ch3_3_5_crank_slider", "scotch_yoke"]
+)
+def test_equations_are_those_of_the_polygons(name):
+    """The worked solution writes each dyad's equation as the polygons draw it, term by term."""
+    report = analyze(read_edgelist(fixture(name)))
+    plan = make_plan(report)
+    state = solve_pose(plan)
+    text = kinematics_text(name)
+    count = 0
+    for order, letter in ((1, "v"), (2, "a")):
+        for eq in vector_equations(plan, state, order):
+            ways = [
+                " + ".join([f"{letter}_{c.start}", *(t.key for t in c.terms)]) for c in eq.chains
+            ]
+            assert " = ".join([f"{letter}_{eq.x}", *ways]) + "\n" in text, eq.label
+            count += 1
+    assert count >= 2
 
 
 def test_kinematics_in_vietnamese():

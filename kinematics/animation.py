@@ -35,7 +35,7 @@ from PIL import Image
 from structure.errors import MechanismError
 from structure.report import StructuralReport
 
-from .figures import _draw_scene
+from .mechanism_figure import _draw_scene
 from .plan import SolvePlan
 from .solve import solve_poses
 from .sweep import Sweep

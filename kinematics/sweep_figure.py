@@ -1,0 +1,134 @@
+"""Sweep plots: the points' paths, ω, ε, speed, acceleration, μ and balancing against the input.
+
+:func:`sweep_figure` — point paths and ω, ε, \\|v\\|, \\|a\\|, transmission
+angle and balancing moment against the input, each a ``Line2D`` with gid
+``path:<point>``, ``omega:<link>``, ``epsilon:<link>``, ``speed:<point>``,
+``accel:<point>``, ``transmission:<group>``, ``balancing:<name>``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from .plan import SolvePlan
+from .sweep import Sweep
+
+__all__ = ["sweep_figure"]
+
+
+def _input_axis(result: Sweep, plan: SolvePlan | None) -> tuple[np.ndarray, str]:
+    """The first input in degrees (a rotation) or metres (a slide), and its axis label."""
+    x = np.asarray(result.inputs[:, 0], dtype=float)
+    name = plan.drivers[0].link if plan is not None and plan.drivers else "1"
+    if plan is not None and plan.drivers and plan.drivers[0].kind == "P":
+        return x, f"driver {name}: displacement from the sketch (m)"
+    return np.degrees(x), f"driver {name}: rotation from the sketch (°)"
+
+
+def sweep_figure(result: Sweep, plan: SolvePlan | None = None) -> Figure:
+    """The sweep's curves against the input: paths, ω, ε, \\|v\\|, \\|a\\|, μ, balancing.
+
+    Panels: the points' paths in the plane (coupler curves; the fixed points
+    as dots), each link's ω and ε, each moving point's speed and acceleration
+    magnitude, each dyad's transmission angle (degrees) and, when the file has
+    loads, the balancing moment (or force), all against the first input in
+    degrees (metres for a sliding driver, when ``plan`` says so).
+
+    Parameters
+    ----------
+    result : Sweep
+        From :func:`kinematics.sweep.sweep`.
+    plan : SolvePlan, optional
+        Names the driver and tells a rotation from a slide.
+
+    Returns
+    -------
+    Figure
+
+    Examples
+    --------
+    >>> from structure.edgelist import parse_edgelist
+    >>> from structure.report import analyze
+    >>> from kinematics.plan import make_plan
+    >>> from kinematics.sweep import sweep
+    >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+    ...                     "point A 0 0", "point B 0.1 0", "point C 0.3 0.3", "point D 0.4 0"])
+    >>> fig = sweep_figure(sweep(make_plan(analyze(m)), steps=12))
+    >>> sorted(ln.get_gid() for ln in fig.axes[1].lines)
+    ['omega:1', 'omega:2', 'omega:3']
+    """
+    x, xlabel = _input_axis(result, plan)
+    panels = 7 if result.balancing else 6
+    cols = 4 if result.balancing else 3
+    fig = Figure(figsize=(4.6 * cols, 8.0))
+    FigureCanvasAgg(fig)
+    axes = list(fig.subplots(2, cols).ravel())
+    for extra in axes[panels:]:
+        fig.delaxes(extra)
+    paths, omega, epsilon, speed, accel, trans = axes[:6]
+
+    positions = {n: np.asarray(v["position"], dtype=float) for n, v in result.points.items()}
+    reach = np.array([p for v in positions.values() for p in v]) if positions else np.zeros((1, 2))
+    size = float(np.ptp(reach, axis=0).max()) or 1.0
+    moving = [n for n, p in positions.items() if float(np.ptp(p, axis=0).max()) > 1e-9 * size]
+    for name in moving:
+        p = positions[name]
+        paths.plot(p[:, 0], p[:, 1], lw=1.3, label=name, gid=f"path:{name}")
+    for name, p in positions.items():
+        if name not in moving:
+            paths.plot(p[:1, 0], p[:1, 1], "k^", ms=5, gid=f"fixed:{name}")
+            paths.annotate(name, (float(p[0, 0]), float(p[0, 1])), fontsize=7)
+    paths.set_aspect("equal", adjustable="datalim")
+    paths.set_title("Paths of the points (coupler curves)", fontsize=10)
+    paths.set_xlabel("x (m)")
+    paths.set_ylabel("y (m)")
+
+    for name, values in result.links.items():
+        omega.plot(x, values["omega"], lw=1.3, label=name, gid=f"omega:{name}")
+        epsilon.plot(x, values["epsilon"], lw=1.3, label=name, gid=f"epsilon:{name}")
+    omega.set_title("Angular velocity ω", fontsize=10)
+    omega.set_ylabel("ω (rad/s)")
+    epsilon.set_title("Angular acceleration ε", fontsize=10)
+    epsilon.set_ylabel("ε (rad/s²)")
+    for name in moving:
+        v = np.asarray(result.points[name]["velocity"], dtype=float)
+        a = np.asarray(result.points[name]["acceleration"], dtype=float)
+        speed.plot(x, np.hypot(v[:, 0], v[:, 1]), lw=1.3, label=name, gid=f"speed:{name}")
+        accel.plot(x, np.hypot(a[:, 0], a[:, 1]), lw=1.3, label=name, gid=f"accel:{name}")
+    speed.set_title("Speed |v| of the points", fontsize=10)
+    speed.set_ylabel("|v| (m/s)")
+    accel.set_title("Acceleration |a| of the points", fontsize=10)
+    accel.set_ylabel("|a| (m/s²)")
+    for label, mu in result.transmission.items():
+        trans.plot(x, np.degrees(mu), lw=1.3, label=label, gid=f"transmission:{label}")
+    if not result.transmission:
+        trans.text(
+            0.5,
+            0.5,
+            "no dyad with a transmission angle",
+            ha="center",
+            va="center",
+            transform=trans.transAxes,
+            fontsize=9,
+        )
+    trans.set_title("Transmission angle μ", fontsize=10)
+    trans.set_ylabel("μ (°)")
+    chosen = [omega, epsilon, speed, accel, trans]
+    if result.balancing:
+        bal = axes[6]
+        for name, values in result.balancing.items():
+            bal.plot(x, values, lw=1.3, label=name, gid=f"balancing:{name}")
+        bal.set_title("Balancing moment (force)", fontsize=10)
+        bal.set_ylabel("M_cb (N·m) or P_cb (N)")
+        chosen.append(bal)
+    for ax in chosen:
+        ax.set_xlabel(xlabel, fontsize=8)
+        ax.grid(True, lw=0.4, alpha=0.6)
+        if ax.lines:
+            ax.legend(fontsize=7, ncol=2 if len(ax.lines) > 6 else 1)
+    if paths.lines and moving:
+        paths.legend(fontsize=7, ncol=2 if len(moving) > 6 else 1)
+    fig.tight_layout()
+    return fig

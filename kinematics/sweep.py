@@ -25,11 +25,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from structure.errors import EdgeListError, EdgeListProblem
+
 from .forces import forces_over
 from .plan import SolvePlan
 from .solve import solve_poses
 
-__all__ = ["Sweep", "sweep", "transmission_angle"]
+__all__ = ["Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"]
 
 
 @dataclass(frozen=True)
@@ -240,3 +242,86 @@ def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
         along = np.abs(np.einsum("ij,ij->i", rod, u)) / np.hypot(rod[:, 0], rod[:, 1])
         out[g.label] = np.arcsin(np.clip(along, 0.0, 1.0))
     return out
+
+
+def parse_inputs(lines, plan: SolvePlan, source: str = "<inputs>") -> np.ndarray:
+    """Driver inputs (poses, drivers) from text: one pose per line, one column per driver.
+
+    A turning driver's column is its rotation from the sketch in degrees, a
+    sliding driver's its displacement in metres. Columns are separated by
+    commas or blanks; ``#`` starts a comment. A first line ``drivers 4 1``
+    sets the column order; without it the columns follow the drivers' order.
+    Every bad line is reported, with its number.
+
+    >>> from structure.edgelist import parse_edgelist
+    >>> from structure.report import analyze
+    >>> from kinematics.plan import make_plan
+    >>> plan = make_plan(analyze(parse_edgelist(["driver 1", "0 1 R A", "point A 0 0"])))
+    >>> parse_inputs(["# crank angle", "0", "90"], plan).round(6).tolist()
+    [[0.0], [1.570796]]
+    """
+    drivers = [d.link for d in plan.drivers]
+    order = list(range(len(drivers)))
+    rows: list[list[float]] = []
+    problems: list[EdgeListProblem] = []
+    first = True
+    for line_no, raw in enumerate(lines, start=1):
+        text = raw.split("#", 1)[0].replace(",", " ").split()
+        if not text:
+            continue
+        if first and text[0] == "drivers":
+            first = False
+            if sorted(text[1:]) != sorted(drivers):
+                problems.append(
+                    EdgeListProblem(
+                        line_no,
+                        raw.rstrip("\n"),
+                        f"the drivers are {', '.join(drivers)}: name each once",
+                    )
+                )
+            else:
+                order = [text[1:].index(link) for link in drivers]
+            continue
+        first = False
+        values = _numbers(text)
+        if values is None:
+            problems.append(EdgeListProblem(line_no, raw.rstrip("\n"), "not a row of numbers"))
+        elif len(values) != len(drivers):
+            problems.append(
+                EdgeListProblem(
+                    line_no,
+                    raw.rstrip("\n"),
+                    f"{len(values)} value(s) for {len(drivers)} driver(s) ({', '.join(drivers)})",
+                )
+            )
+        else:
+            rows.append([values[i] for i in order])
+    if not rows and not problems:
+        problems.append(EdgeListProblem(0, "", "no inputs: one line per pose is needed"))
+    if problems:
+        raise EdgeListError(source, problems)
+    out = np.array(rows, dtype=float)
+    for k, d in enumerate(plan.drivers):
+        if d.kind == "R":
+            out[:, k] = np.radians(out[:, k])
+    return out
+
+
+def _numbers(tokens: list[str]) -> list[float] | None:
+    try:
+        values = [float(t) for t in tokens]
+    except ValueError:
+        return None
+    return values if all(math.isfinite(v) for v in values) else None
+
+
+def read_inputs(path, plan: SolvePlan) -> np.ndarray:
+    """:func:`parse_inputs` of a file (an unreadable file is an :class:`EdgeListError` too)."""
+    try:
+        with open(path, encoding="utf-8") as handle:
+            lines = handle.readlines()
+    except (OSError, UnicodeDecodeError) as exc:
+        reason = getattr(exc, "strerror", None) or str(exc)
+        problem = EdgeListProblem(0, "", f"cannot read it: {reason}")
+        raise EdgeListError(str(path), [problem]) from exc
+    return parse_inputs(lines, plan, str(path))

@@ -33,7 +33,7 @@ from kinematics.report import (
     state_to_dict,
 )
 from kinematics.solve import solve_pose
-from kinematics.sweep import sweep
+from kinematics.sweep import read_inputs, sweep
 
 from .edgelist import read_edgelist
 from .errors import MechanismError, MobilityError
@@ -129,6 +129,12 @@ def _parser() -> argparse.ArgumentParser:
     sw.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
     sw.add_argument("--csv", metavar="OUT", help="write every pose to this CSV file")
     sw.add_argument(
+        "--inputs",
+        metavar="FILE",
+        help="the poses to solve instead of one turn: a line per pose, a column per driver "
+        "(degrees, or metres for a sliding driver); a first line 'drivers 4 1' sets the order",
+    )
+    sw.add_argument(
         "--plot",
         metavar="OUT",
         help="plot paths, ω, ε, |v|, |a|, transmission angle, balancing (.png, .svg, .pdf)",
@@ -140,6 +146,9 @@ def _parser() -> argparse.ArgumentParser:
     an.add_argument("out", metavar="OUT", help="the animation: .gif (or .mp4 with ffmpeg)")
     an.add_argument("--steps", type=int, default=36, help="frames per turn (default 36)")
     an.add_argument("--fps", type=float, default=12.0, help="frames per second (default 12)")
+    an.add_argument(
+        "--inputs", metavar="FILE", help="the frames' driver inputs, as for 'assur sweep --inputs'"
+    )
     for command in (classify, kin, fo):
         _add_explain(command)
     return parser
@@ -519,13 +528,17 @@ def _sweep(args: argparse.Namespace) -> int:
     try:
         _check_plot(args.plot)
         plan = make_plan(analyze(read_edgelist(args.file)))
-        result = sweep(plan, steps=args.steps)
+        inputs = read_inputs(args.inputs, plan) if args.inputs else None
+        result = sweep(plan, inputs, steps=args.steps)
         if args.plot:
             _save_plot(args.plot, lambda figures: figures.sweep_figure(result, plan))
     except MechanismError as exc:
         sys.stderr.write(f"error: {exc}\n")
         return 1
-    out = [f"{args.steps} poses over one turn of the driver(s) of {args.file}", ""]
+    if args.inputs:
+        out = [f"{len(result.inputs)} poses of {args.inputs} for {args.file}", ""]
+    else:
+        out = [f"{args.steps} poses over one turn of the driver(s) of {args.file}", ""]
     out.append("link   ω min … max (rad/s)        ε min … max (rad/s²)")
     for name, values in result.links.items():
         w, e = values["omega"], values["epsilon"]
@@ -558,14 +571,16 @@ def _animate(args: argparse.Namespace) -> int:
             raise MechanismError("animate needs matplotlib: pip install 'assur[plot]'") from exc
         report = analyze(read_edgelist(args.file))
         plan = make_plan(report)
-        animate(report, plan, turn_inputs(plan, args.steps), args.out, fps=args.fps)
+        inputs = read_inputs(args.inputs, plan) if args.inputs else turn_inputs(plan, args.steps)
+        animate(report, plan, inputs, args.out, fps=args.fps)
     except MechanismError as exc:
         sys.stderr.write(f"error: {exc}\n")
         return 1
     except OSError as exc:
         sys.stderr.write(f"error: cannot write {args.out}: {exc.strerror or exc}\n")
         return 1
-    sys.stdout.write(f"wrote {args.out}: {args.steps} frames at {args.fps:g} frames/s\n")
+    frames = len(inputs)
+    sys.stdout.write(f"wrote {args.out}: {frames} frames at {args.fps:g} frames/s\n")
     return 0
 
 

@@ -8,12 +8,15 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from kinematics.plan import make_plan
 from kinematics.solve import AssemblyError
-from kinematics.sweep import sweep
+from kinematics.sweep import parse_inputs, sweep
 from structure.cli import main
-from structure.edgelist import parse_edgelist
+from structure.edgelist import parse_edgelist, read_edgelist
+from structure.errors import EdgeListError
 from structure.report import analyze
 
 CRANK_ROCKER = """
@@ -123,3 +126,78 @@ def test_slot_through_the_motion_transmits_at_right_angles(name):
     result = sweep(make_plan(analyze(read_edgelist(FIXTURES / name))), steps=72)
     (mu,) = result.transmission.values()
     np.testing.assert_allclose(mu, np.pi / 2, atol=1e-9)
+
+
+FIVEBAR = "fivebar_two_drivers.edges"
+
+
+def _fivebar_plan():
+    from ..conftest import FIXTURES
+
+    return make_plan(analyze(read_edgelist(FIXTURES / FIVEBAR)))
+
+
+def test_inputs_file_rows_columns_and_units():
+    plan = _fivebar_plan()  # drivers 1 (turning) and 4 (turning)
+    got = parse_inputs(["# two cranks", "drivers 4 1", "-2, 5", "", "-4 10  # a comment"], plan)
+    want = np.radians([[5.0, -2.0], [10.0, -4.0]])  # columns back in the drivers' order
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-15)
+
+
+def test_inputs_file_problems_are_named_by_line():
+    plan = _fivebar_plan()
+    with pytest.raises(EdgeListError) as err:
+        parse_inputs(["drivers 1", "0 0", "5", "x y", "1 nan"], plan, "poses.txt")
+    text = str(err.value)
+    for expected in (
+        "poses.txt: line 1: the drivers are 1, 4",
+        "line 3: 1 value(s) for 2 driver(s)",
+        "line 4: not a row of numbers",
+        "line 5: not a row of numbers",
+    ):
+        assert expected in text
+    with pytest.raises(EdgeListError, match="no inputs"):
+        parse_inputs(["# nothing"], plan)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.lists(st.tuples(st.floats(-720, 720), st.floats(-720, 720)), min_size=1, max_size=12),
+    st.sampled_from([", ", " ", "\t", " ,  "]),
+    st.booleans(),
+)
+def test_inputs_file_round_trip(rows, separator, reversed_header):
+    plan = _fivebar_plan()
+    header = ["drivers 4 1"] if reversed_header else []
+    lines = header + [
+        separator.join(repr(v) for v in (row[::-1] if reversed_header else row)) for row in rows
+    ]
+    np.testing.assert_allclose(parse_inputs(lines, plan), np.radians(np.array(rows)), atol=1e-12)
+
+
+def test_sweep_and_animate_take_an_inputs_file(tmp_path, capsys):
+    # The five-bar cannot turn both cranks together through a whole turn; a
+    # file gives the poses. Its rows in the other column order give the same sweep.
+    from ..conftest import FIXTURES
+
+    fixture = str(FIXTURES / FIVEBAR)
+    (tmp_path / "a.txt").write_text("0 0\n5 -2\n10 -4\n")
+    (tmp_path / "b.txt").write_text("drivers 4 1\n0 0\n-2 5\n-4 10\n")
+    outputs = []
+    for name in ("a", "b"):
+        csv_path = tmp_path / f"{name}.csv"
+        args = ["sweep", fixture, "--inputs", str(tmp_path / f"{name}.txt"), "--csv", str(csv_path)]
+        assert main(args) == 0
+        outputs.append(csv_path.read_text())
+    assert outputs[0] == outputs[1]
+    assert "3 poses of" in capsys.readouterr().out
+    (tmp_path / "bad.txt").write_text("0 0\n5\n")
+    assert main(["sweep", fixture, "--inputs", str(tmp_path / "bad.txt")]) == 1
+    assert "bad.txt: line 2" in capsys.readouterr().err
+    assert main(["sweep", fixture, "--inputs", str(tmp_path / "missing.txt")]) == 1
+    assert "cannot read it" in capsys.readouterr().err
+    gif = tmp_path / "f.gif"
+    assert main(["animate", fixture, str(gif), "--inputs", str(tmp_path / "a.txt")]) == 0
+    from PIL import Image
+
+    assert Image.open(gif).n_frames == 3

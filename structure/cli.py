@@ -53,7 +53,8 @@ __all__ = ["main"]
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="assur",
-        description="Structural analysis of planar mechanisms by Assur groups.",
+        description="Planar mechanisms by Assur groups: structure, kinematics, forces, gear "
+        "trains, figures and worked solutions.",
     )
     sub = parser.add_subparsers(dest="command", required=True)
     classify = sub.add_parser(

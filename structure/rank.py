@@ -38,7 +38,14 @@ from .constraints import (
 from .dulmage_mendelsohn import Matcher, irreducible_blocks
 from .errors import MechanismError
 
-__all__ = ["DENSE_LIMIT", "RankAnalysis", "generic_rank", "geometric_rank", "null_space"]
+__all__ = [
+    "DENSE_LIMIT",
+    "RankAnalysis",
+    "generic_rank",
+    "geometric_rank",
+    "null_space",
+    "sketch_scale",
+]
 
 #: largest number of scalar unknowns for the dense (rank-revealing) pass
 DENSE_LIMIT = 6000
@@ -254,7 +261,8 @@ def geometric_rank(system: ConstraintSystem, realization: Realization) -> RankAn
     return dense_rank(system, realization, method="dense")
 
 
-def _scale(system: ConstraintSystem, realization: Realization) -> float:
+def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
+    """The realization's size (largest span of its points), which makes lengths dimensionless."""
     pts = [p for p in realization.point if p is not None]
     if not pts:
         return 1.0
@@ -278,7 +286,7 @@ def dense_rank(system: ConstraintSystem, realization: Realization, method: str) 
         )
     J = jacobian(system, realization)
     uo, ro = system.scalar_offsets()
-    length = _scale(system, realization)
+    length = sketch_scale(system, realization)
     for u, unk in enumerate(system.unknowns):
         if unk.kind == "ang":
             J[:, uo[u]] /= length
@@ -315,7 +323,7 @@ def null_space(
     if J.shape[0] == 0:
         return np.eye(n)
     uo, _ = system.scalar_offsets()
-    length = _scale(system, realization)
+    length = sketch_scale(system, realization)
     for u, unk in enumerate(system.unknowns):
         if unk.kind == "ang":
             J[:, uo[u]] /= length

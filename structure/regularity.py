@@ -27,7 +27,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from .constraints import ConstraintSystem, Realization, RowKind, jacobian
-from .rank import _scale, null_space
+from .rank import null_space, sketch_scale
 
 __all__ = ["nearby_pose"]
 
@@ -120,7 +120,7 @@ def nearby_pose(
         return None
     offsets, _ = system.scalar_offsets()
     uo = offsets.tolist()
-    length = _scale(system, sketch)
+    length = sketch_scale(system, sketch)
     angle_columns = [uo[u] for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
     basis = null_space(system, sketch, rows)
     if basis.shape[1] == 0:

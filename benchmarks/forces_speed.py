@@ -24,7 +24,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from kinematics.forces import forces_over
 from kinematics.plan import make_plan
 from kinematics.solve import solve_poses
-from structure.edgelist import parse_edgelist
+from structure.readwrite.edgelist import parse_edgelist
 from structure.report import analyze
 
 FOURBAR = """

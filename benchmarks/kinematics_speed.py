@@ -67,7 +67,7 @@ sys.path.insert(0, str(ROOT))
 
 from kinematics.plan import SolvePlan, make_plan  # noqa: E402
 from kinematics.solve import solve_poses  # noqa: E402
-from structure.edgelist import read_edgelist  # noqa: E402
+from structure.readwrite.edgelist import read_edgelist  # noqa: E402
 from structure.report import analyze  # noqa: E402
 
 FIXTURES = ROOT / "fixtures"

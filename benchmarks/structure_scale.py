@@ -35,9 +35,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from structure.edgelist import read_edgelist, write_edgelist
 from structure.errors import MechanismError
 from structure.generators import GROUP_KINDS, random_mechanism_with_groups
+from structure.readwrite.edgelist import read_edgelist, write_edgelist
 from structure.report import analyze
 
 GOAL_RATIO = 5.0  # analysis / read at 10^5 links

@@ -1,7 +1,107 @@
 """Kinematics of planar mechanisms, solved Assur group by Assur group.
 
 The structural report (:mod:`structure`) gives the groups in solve order;
-:func:`kinematics.plan.make_plan` turns them into equations and
-:mod:`kinematics.solve`, :mod:`kinematics.sweep` and :mod:`kinematics.exact`
-solve them. This package depends on :mod:`structure`, never the other way round.
+:func:`make_plan` turns them into equations, :func:`solve_pose`,
+:func:`sweep` and :func:`solve_exact` solve them, :func:`solve_forces` gives
+the joint reactions and the balancing moment. This package depends on
+:mod:`structure`, never the other way round.
+
+The public names below are imported from here; each is loaded on first use,
+so ``import kinematics`` stays cheap (sympy and matplotlib come only with the
+parts that need them).
+
+>>> import structure, kinematics
+>>> m = structure.read_edgelist("fixtures/ch2_2_4_fourbar.edges")
+>>> state = kinematics.solve_pose(kinematics.make_plan(structure.analyze(m)))
+>>> round(state.links["3"].omega, 9)
+5.0
 """
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+from structure.deprecation import alias_moved_modules
+
+#: the public names, by the module (below this package) that defines them
+_PUBLIC_BY_MODULE = {
+    "plan": ("DriverStep", "GroupStep", "SolvePlan", "make_plan"),
+    "solve": (
+        "AssemblyError",
+        "KinematicState",
+        "LinkState",
+        "Motion",
+        "PointState",
+        "SingularPoseError",
+        "solve_pose",
+        "solve_poses",
+    ),
+    "sweep": ("Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"),
+    "forces": (
+        "ForceSolution",
+        "ForceSweep",
+        "IndeterminateError",
+        "Reaction",
+        "forces_over",
+        "solve_forces",
+    ),
+    "exact": ("ExactForces", "ExactState", "forces_exact", "solve_exact"),
+    "inertia": ("reduced_inertia_over",),
+    "polygons": ("Term", "VectorEquation", "vector_equations"),
+    "serialization": ("exact_forces_to_dict", "exact_to_dict", "forces_to_dict", "state_to_dict"),
+    "gears": (
+        "DifferentialSplit",
+        "Mesh",
+        "TrainForces",
+        "TrainLosses",
+        "TrainRatios",
+        "balancing_moment",
+        "bevel_differential_split",
+        "meshes",
+        "reduced_inertia",
+        "speed_ratios",
+        "train_forces",
+        "train_losses",
+    ),
+    "explain": ("explain_forces", "explain_kinematics"),
+}
+_PUBLIC = {name: module for module, names in _PUBLIC_BY_MODULE.items() for name in names}
+
+__all__ = sorted(_PUBLIC)
+
+if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors only
+    from .exact import ExactForces, ExactState, forces_exact, solve_exact  # noqa: F401
+    from .forces import ForceSolution, solve_forces  # noqa: F401
+    from .plan import SolvePlan, make_plan  # noqa: F401
+    from .solve import KinematicState, solve_pose, solve_poses  # noqa: F401
+    from .sweep import Sweep, sweep  # noqa: F401
+
+
+def __getattr__(name: str) -> Any:
+    module = _PUBLIC.get(name)
+    if module is None:
+        raise AttributeError(f"module 'kinematics' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_PUBLIC))
+
+
+alias_moved_modules(
+    {
+        "kinematics.involute": "kinematics.gears.involute",
+        "kinematics.differential": "kinematics.gears.differential",
+        "kinematics.report": "kinematics.serialization",
+        "kinematics.figure_style": "kinematics.figures.style",
+        "kinematics.mechanism_figure": "kinematics.figures.mechanism",
+        "kinematics.graph_figure": "kinematics.figures.graph",
+        "kinematics.polygon_figures": "kinematics.figures.polygons",
+        "kinematics.force_figures": "kinematics.figures.forces",
+        "kinematics.sweep_figure": "kinematics.figures.sweep",
+        "kinematics.animation": "kinematics.figures.animation",
+    }
+)

@@ -6,7 +6,7 @@ from the sketch coordinates alone; when those are exact (decimals, fractions,
 speeds may stay symbols: ``symbolic=True`` gives ω3 = ω1/2 for the exam's
 slotted link rather than a number.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
@@ -262,7 +262,7 @@ def _exact_reactions(rows, lam: sympy.Matrix) -> list:
 def forces_exact(plan: SolvePlan) -> ExactForces:
     """Exact reactions and balancing moment at the sketch pose (see :mod:`kinematics.forces`).
 
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> from kinematics.plan import make_plan
     >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0",

@@ -19,7 +19,7 @@ Every solution comes with the virtual-power check: the power of every load,
 inertia load and the balancing moment must add up to zero; its residual is
 reported relative to the largest term.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0", "point B 0.1 0",

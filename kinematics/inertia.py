@@ -9,7 +9,7 @@ driver alone turning with the reduced moment of inertia, so
 The link motions come from the kinematics at each pose; the masses from the
 ``mass LINK m J S`` statements.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> from kinematics.solve import solve_poses

@@ -5,7 +5,7 @@ lower-pair mechanism, drivers and Assur groups) and the sketch coordinates
 into what the solvers need: for each driver its pivot or slide, for each group
 its links and the equations of its pairs. Nothing is solved here.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 1", "point C 2 1", "point D 2 0"])
@@ -254,7 +254,7 @@ def _rolling_steps(
 
     None when a higher pair is not a gear mesh with both tooth numbers.
     """
-    from .gears import meshes  # gears imports sympy; only mechanisms with meshes need it
+    from .gears.trains import meshes  # gears imports sympy; only mechanisms with meshes need it
 
     try:
         found = {mesh.pair.id: mesh for mesh in meshes(report.mechanism)}

@@ -23,7 +23,7 @@ closes. Groups that are not dyads (triads and higher) have no such equations.
 The notation is :mod:`kinematics.explain`'s: the point of link 3 at B is
 ``B3`` (:func:`point_label`).
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> from kinematics.solve import solve_pose
@@ -124,7 +124,7 @@ def slide_angle(plan: SolvePlan, state: KinematicState, pair_id: int) -> float:
     The angle is the pair's ``angle=`` plus the turn of its moving link (of
     the first link when neither is the ground).
 
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> from kinematics.plan import make_plan
     >>> from kinematics.solve import solve_pose

@@ -17,7 +17,7 @@ A group that cannot be assembled raises :class:`AssemblyError`; one whose
 Jacobian loses rank (a dead centre) raises :class:`SingularPoseError`. Both
 name the group and the input; nothing is returned as NaN.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",

@@ -10,11 +10,23 @@ order) -> the solvers of the ``kinematics`` package.
 """
 
 from .assur import *  # noqa: F403
-from .edgelist import *  # noqa: F403
+from .deprecation import alias_moved_modules
 from .errors import *  # noqa: F403
 from .generators import *  # noqa: F403
-from .jsonformat import *  # noqa: F403
 from .mobility import *  # noqa: F403
 from .model import *  # noqa: F403
+from .readwrite.edgelist import *  # noqa: F403
+from .readwrite.jsonformat import *  # noqa: F403
 from .replacement import *  # noqa: F403
 from .report import *  # noqa: F403
+
+alias_moved_modules(
+    {
+        "structure.edgelist": "structure.readwrite.edgelist",
+        "structure.jsonformat": "structure.readwrite.jsonformat",
+        "structure.constraints": "structure.rigidity.constraints",
+        "structure.rank": "structure.rigidity.rank",
+        "structure.dulmage_mendelsohn": "structure.rigidity.matching",
+        "structure.regularity": "structure.rigidity.regularity",
+    }
+)

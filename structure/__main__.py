@@ -1,7 +1,6 @@
-"""``python -m structure`` runs the ``assur`` command line."""
+"""``python -m structure`` has moved: the command line lives at the top of kinematics."""
 
 import sys
 
-from .cli import main
-
-sys.exit(main())
+sys.stderr.write("the assur command line moved: run 'assur' or 'python -m kinematics'\n")
+sys.exit(2)

@@ -1,7 +1,7 @@
 """Assur-group decomposition and classification.
 
 The driven constraint system of a lower-pair mechanism (pins as points) is put
-in block-triangular form (:mod:`structure.dulmage_mendelsohn`). Each link is
+in block-triangular form (:mod:`structure.rigidity.matching`). Each link is
 known once all its unknowns are; the links that become known in the same
 irreducible block form one Assur group (a minimal chain with W = 0 once its
 external pairs are attached to known links). The block order is the solve
@@ -18,7 +18,7 @@ References: L. V. Assur (1914); I. I. Artobolevsky, *Theory of Mechanisms and
 Machines*; B. Servatius, O. Shai, W. Whiteley, "Combinatorial
 characterization of the Assur graphs from engineering", EJC 31 (2010).
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> d = decompose(m)
 >>> [(g.links, g.assur_class, g.order, g.kind) for g in d.groups]
@@ -33,11 +33,11 @@ from dataclasses import dataclass, field
 
 import networkx as nx
 
-from .constraints import MissingGeometry, RowKind, constraint_system, sketch_realization
-from .dulmage_mendelsohn import irreducible_blocks
 from .errors import DecompositionError, MobilityError
 from .model import Hinge, Mechanism, PairKind, validated
-from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
+from .rigidity.constraints import MissingGeometry, RowKind, constraint_system, sketch_realization
+from .rigidity.matching import irreducible_blocks
+from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
 
 __all__ = [
     "AssurGroup",

@@ -214,7 +214,7 @@ def random_mechanism_with_groups(
 
     Examples
     --------
-    >>> from structure.edgelist import write_edgelist
+    >>> from structure import write_edgelist
     >>> m, groups = random_mechanism_with_groups(3, seed=7, kinds=("RRR",))
     >>> groups
     [('2', '3')]

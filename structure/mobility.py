@@ -1,7 +1,7 @@
 """Mobility with its corrections: W = 3n − (2·P5 + P4) + r − W_passive.
 
 * ``r`` counts redundant constraints. Structurally they are found from the
-  generic rank of the constraint system (:mod:`structure.rank`): a
+  generic rank of the constraint system (:mod:`structure.rigidity.rank`): a
   subassembly with more constraints than its bodies can take (the (3,3)
   count, pins as points), or a loop of prismatic pairs whose angle
   constraints repeat each other. With sketch coordinates, the rank at the
@@ -13,7 +13,7 @@
 The redundant constraints are named by pair: the latest-listed pair of each
 dependent set.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> m = parse_edgelist(["0 1 R", "1 2 R", "2 3 R", "3 0 R"])
 >>> mob = mobility(m)
 >>> mob.W_topology, mob.r, mob.W_passive, mob.W
@@ -27,16 +27,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .constraints import (
+from .model import Mechanism, PairKind
+from .rigidity.constraints import (
     ConstraintSystem,
     MissingGeometry,
     Realization,
     constraint_system,
     sketch_realization,
 )
-from .model import Mechanism, PairKind
-from .rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank, null_space
-from .regularity import nearby_pose
+from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank, null_space
+from .rigidity.regularity import nearby_pose
 
 __all__ = ["Mobility", "PassiveMotion", "Redundancy", "counts", "mobility", "mobility_analysis"]
 

@@ -303,8 +303,8 @@ def _freeze_graph(pairs: Iterable[Pair], links: Iterable[str]) -> nx.MultiGraph:
 class Mechanism:
     """An immutable planar mechanism: links, pairs, ground, drivers, points.
 
-    Build it with :meth:`from_pairs`, :func:`~structure.edgelist.parse_edgelist`
-    or :func:`~structure.jsonformat.mechanism_from_dict`; each validates the
+    Build it with :meth:`from_pairs`, :func:`~structure.readwrite.edgelist.parse_edgelist`
+    or :func:`~structure.readwrite.jsonformat.mechanism_from_dict`; each validates the
     description and raises :class:`~structure.errors.EdgeListError` listing
     every problem found.
     """

@@ -16,7 +16,7 @@ Virtual links are named ``v1``, ``v2``, … after the higher pairs in file
 order (with primes added if a link already has that name). Lower pairs keep
 their ids; new pairs get ids after the last one.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> m = parse_edgelist(["driver 1", "0 1 R O1", "1 2 H K centers=C1,A",
 ...                     "2 0 R O2"])
 >>> r, reps = replace_higher_pairs(m)

@@ -4,7 +4,7 @@
 does it; :func:`format_report` prints it as a worked answer and
 :func:`report_to_dict` gives the JSON-ready form.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> r = analyze(parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"]))
 >>> r.mobility.W, r.formula, r.textbook_formula
 (1, 'I(1) → II(2,3)', '1 = 1 + 0')
@@ -20,12 +20,12 @@ from typing import Any
 import networkx as nx
 
 from .assur import AssurGroup, Decomposition, decompose, driver_candidates, roman
-from .constraints import constraint_system, sketch_problems
 from .errors import DecompositionError, EdgeListError, MobilityError
 from .mobility import Mobility, mobility_analysis
 from .model import Mechanism
-from .rank import generic_rank
 from .replacement import Replacement, replace_higher_pairs
+from .rigidity.constraints import constraint_system, sketch_problems
+from .rigidity.rank import generic_rank
 from .utils import paused_gc
 
 __all__ = [

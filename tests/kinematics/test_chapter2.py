@@ -14,7 +14,7 @@ import pytest
 
 from kinematics.plan import make_plan
 from kinematics.solve import solve_pose
-from structure.edgelist import read_edgelist
+from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES, KINEMATICS_TABLE, expected_table

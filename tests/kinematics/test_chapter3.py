@@ -14,7 +14,7 @@ import sympy
 from kinematics.exact import forces_exact
 from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
-from structure.edgelist import read_edgelist
+from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES, FORCES_TABLE, expected_table

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from structure.cli import main
+from kinematics.cli.main import main
 
 from ..conftest import FIXTURES
 

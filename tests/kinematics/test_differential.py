@@ -5,7 +5,7 @@ F_t2 = 14000 N; friction moments planet/cross-shaft 1.3 N·m, planet/thrust
 washer 5.6132 N·m, their sum printed as M3ms = 7 N·m; side gear/case
 M4ms = M5ms = 35.2304 N·m; rolling-resistance moments M_Ctr = M_Cph = 191.25;
 F_t3 = 7099.5 N, F_t4 = 6900.5 N; M4 = 580.7405 N·m (left), M5 = 604.0195 N·m
-(right). Not printed, inferred (see :mod:`kinematics.differential`): the
+(right). Not printed, inferred (see :mod:`kinematics.gears.differential`): the
 side-gear radius r_s, the planet radius r_p and the case torque F_t2·r_s.
 
 Inconsistencies in the printed values, tested below through derived values:
@@ -23,7 +23,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from kinematics.differential import DifferentialSplit, bevel_differential_split
+from kinematics.gears.differential import DifferentialSplit, bevel_differential_split
 
 # printed in the paper
 M1 = 784.7202

@@ -7,7 +7,7 @@ import sympy
 
 from kinematics.exact import solve_exact
 from kinematics.plan import make_plan
-from structure.edgelist import read_edgelist
+from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES, KINEMATICS_TABLE, expected_table
@@ -50,7 +50,7 @@ def test_exam_slotted_link_turns_at_half_the_crank_speed():
 
 
 def sketch_fixtures():
-    from structure.constraints import sketch_problems
+    from structure.rigidity.constraints import sketch_problems
 
     out = []
     for path in sorted(FIXTURES.glob("*.edges")):

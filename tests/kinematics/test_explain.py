@@ -13,13 +13,13 @@ import re
 import numpy as np
 import pytest
 
-from kinematics.explain import angle_of, explain_forces, explain_kinematics
+from kinematics.cli.main import main
+from kinematics.explain.worked import angle_of, explain_forces, explain_kinematics
 from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
 from kinematics.polygons import vector_equations
 from kinematics.solve import solve_pose
-from structure.cli import main
-from structure.edgelist import parse_edgelist, read_edgelist
+from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES

@@ -11,14 +11,14 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
+from kinematics.cli.main import main
 from kinematics.forces import IndeterminateError, solve_forces
 from kinematics.plan import make_plan
-from kinematics.report import forces_to_dict
+from kinematics.serialization import forces_to_dict
 from kinematics.solve import SingularPoseError, solve_pose
-from structure.cli import main
-from structure.edgelist import parse_edgelist, write_edgelist
 from structure.generators import random_mechanism
 from structure.model import Load, PointDef
+from structure.readwrite.edgelist import parse_edgelist, write_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES

@@ -11,7 +11,7 @@ import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from kinematics.gears import (
+from kinematics.gears.trains import (
     balancing_moment,
     meshes,
     reduced_inertia,
@@ -21,8 +21,8 @@ from kinematics.gears import (
 )
 from kinematics.plan import make_plan
 from kinematics.solve import solve_pose
-from structure.edgelist import parse_edgelist, read_edgelist
 from structure.errors import MobilityError
+from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES, GEARS_TABLE, expected_table

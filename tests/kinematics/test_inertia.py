@@ -9,7 +9,7 @@ import numpy as np
 from kinematics.inertia import reduced_inertia_over
 from kinematics.plan import make_plan
 from kinematics.solve import solve_poses
-from structure.edgelist import parse_edgelist
+from structure.readwrite.edgelist import parse_edgelist
 from structure.report import analyze
 
 

@@ -13,7 +13,7 @@ import math
 import numpy as np
 import pytest
 
-from kinematics.involute import (
+from kinematics.gears.involute import (
     base_radius,
     center_distance,
     contact_ratio,

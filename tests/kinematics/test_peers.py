@@ -25,7 +25,7 @@ import pytest
 
 from kinematics.plan import make_plan
 from kinematics.solve import solve_poses
-from structure.edgelist import read_edgelist
+from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"

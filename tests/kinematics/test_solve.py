@@ -9,9 +9,9 @@ import pytest
 
 from kinematics.plan import make_plan
 from kinematics.solve import AssemblyError, SingularPoseError, solve_pose, solve_poses
-from structure.constraints import sketch_problems
-from structure.edgelist import parse_edgelist, read_edgelist
+from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
+from structure.rigidity.constraints import sketch_problems
 
 from ..conftest import FIXTURES
 

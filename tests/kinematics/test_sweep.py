@@ -11,12 +11,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from kinematics.cli.main import main
 from kinematics.plan import make_plan
 from kinematics.solve import AssemblyError
 from kinematics.sweep import parse_inputs, sweep
-from structure.cli import main
-from structure.edgelist import parse_edgelist, read_edgelist
 from structure.errors import EdgeListError
+from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 
 CRANK_ROCKER = """
@@ -119,7 +119,7 @@ force 3 C -500 0
 def test_slot_through_the_motion_transmits_at_right_angles(name):
     # a Scotch yoke's slot is square to its guide, and an inverted crank–slider's slot passes
     # through the slotted link's pivot: both transmit at 90° all the way round
-    from structure.edgelist import read_edgelist
+    from structure.readwrite.edgelist import read_edgelist
 
     from ..conftest import FIXTURES
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from structure.assur import classify_group, decompose, roman
-from structure.edgelist import parse_edgelist
 from structure.errors import DecompositionError
+from structure.readwrite.edgelist import parse_edgelist
 from structure.report import all_driver_choices, analyze
 
 

@@ -1,4 +1,4 @@
-"""Tests of the edge-list reader and writer (structure.edgelist).
+"""Tests of the edge-list reader and writer (structure.readwrite.edgelist).
 
 Every bad description must give one EdgeListError naming the source and the
 line; every valid one must survive write -> parse unchanged.
@@ -14,10 +14,10 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from structure.edgelist import parse_edgelist, read_edgelist, write_edgelist
 from structure.errors import EdgeListError, MechanismError
-from structure.jsonformat import mechanism_from_json, mechanism_to_json
 from structure.model import DRIVER_KEYS, Driver, Mechanism, PairKind, PointDef
+from structure.readwrite.edgelist import parse_edgelist, read_edgelist, write_edgelist
+from structure.readwrite.jsonformat import mechanism_from_json, mechanism_to_json
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 FIXTURE_FILES = sorted(FIXTURES.glob("*.edges"))

@@ -12,9 +12,16 @@ import sys
 
 import pytest
 
-from structure.cli import main
-from structure.edgelist import read_edgelist
-from structure.explain import Math, check_options, explain_structure, formula, number, subscript
+from kinematics.cli.main import main
+from structure.explain.structural import (
+    Math,
+    check_options,
+    explain_structure,
+    formula,
+    number,
+    subscript,
+)
+from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES

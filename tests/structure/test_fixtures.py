@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from structure.edgelist import read_edgelist
+from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES, FORCES_TABLE, GEARS_TABLE, KINEMATICS_TABLE, expected_table

@@ -1,4 +1,4 @@
-"""Tests of the JSON form of the mechanism model (structure.jsonformat)."""
+"""Tests of the JSON form of the mechanism model (structure.readwrite.jsonformat)."""
 
 from __future__ import annotations
 
@@ -7,13 +7,13 @@ import json
 import pytest
 
 from structure.errors import EdgeListError, MechanismError
-from structure.jsonformat import (
+from structure.model import Driver, Mechanism, PairKind, PointDef
+from structure.readwrite.jsonformat import (
     mechanism_from_dict,
     mechanism_from_json,
     mechanism_to_dict,
     mechanism_to_json,
 )
-from structure.model import Driver, Mechanism, PairKind, PointDef
 
 FOURBAR_PAIRS = [
     {"links": ["0", "1"], "kind": "R", "point": "A"},

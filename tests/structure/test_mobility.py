@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from structure.edgelist import parse_edgelist, read_edgelist
 from structure.errors import MobilityError
 from structure.mobility import mobility
+from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 
 from ..conftest import FIXTURES

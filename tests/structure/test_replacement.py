@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import pytest
 
-from structure.edgelist import parse_edgelist
 from structure.errors import EdgeListError
 from structure.mobility import mobility
 from structure.model import PairKind
+from structure.readwrite.edgelist import parse_edgelist
 from structure.replacement import replace_higher_pairs
 
 

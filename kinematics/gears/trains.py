@@ -14,7 +14,7 @@ link speeds minus the rank of the relations. An unknown tooth number
 (``z=25,?``) is found from coaxiality: every planet's meshes with gears on
 the carrier's axis span the same centre distance.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> m = parse_edgelist(["driver 3", "0 c R O", "0 3 R O", "c 2 R P",
 ...                     "2 0 H gear z=20,60", "2 3 H gear z=25,? internal=3"])
 >>> r = speed_ratios(m)
@@ -241,7 +241,7 @@ def balancing_moment(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr | 
 
     M_in·ω_in + Σ M_i·ω_i = 0, so M_in = −Σ M_i·(ω_i/ω_in); None without loads.
 
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> m = parse_edgelist(["driver 1", "0 1 R A", "0 2 R B", "1 2 H gear z=20,40",
     ...                     "moment 2 -10"])
     >>> balancing_moment(m, speed_ratios(m))
@@ -269,7 +269,7 @@ def reduced_inertia(mechanism: Mechanism, ratios: TrainRatios) -> sympy.Expr:
     m·(ω_c·R/ω_in)² with R the carrier arm from the tooth numbers and the
     module (``module=`` is then needed on its meshes).
 
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> m = parse_edgelist(["driver 3", "0 c R O", "0 3 R O", "c 2 R P",
     ...                     "2 0 H gear z=20,60", "2 3 H gear z=25,105 internal=3",
     ...                     "mass c 0 0.05 O", "point O 0 0"])
@@ -353,7 +353,7 @@ def train_forces(
     carrier takes the planets' pin forces at the arm R. Needs ``module=`` on
     every mesh.
 
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> m = parse_edgelist(["driver C", "0 C R O", "0 1 R O", "C 2 R B",
     ...     "1 2 H gear z=20,20 module=0.02", "2 0 H gear z=20,60 internal=0 module=0.02",
     ...     "moment 1 20"])
@@ -474,7 +474,7 @@ def train_losses(mechanism: Mechanism, ratios: TrainRatios, mesh_efficiency: flo
     M_b·ω_in = −Σ M_i·ω_i + Σ losses. The efficiency is the useful power over
     the input power.
 
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> m = parse_edgelist(["driver C", "0 C R O", "0 1 R O", "C 2 R B",
     ...     "1 2 H gear z=20,20 module=0.02", "2 0 H gear z=20,60 internal=0 module=0.02",
     ...     "moment 1 20"])

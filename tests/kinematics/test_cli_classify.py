@@ -1,4 +1,4 @@
-"""Tests of the ``assur`` command line (structure.cli)."""
+"""Tests of the ``assur`` command line (kinematics.cli): classify and the program itself."""
 
 from __future__ import annotations
 
@@ -9,9 +9,9 @@ from pathlib import Path
 
 import pytest
 
-from structure.cli import main
-from structure.edgelist import read_edgelist
-from structure.jsonformat import mechanism_to_json
+from kinematics.cli.main import main
+from structure.readwrite.edgelist import read_edgelist
+from structure.readwrite.jsonformat import mechanism_to_json
 
 ROOT = Path(__file__).resolve().parents[2]
 FIXTURES = ROOT / "fixtures"
@@ -359,9 +359,9 @@ def test_help_exits_0(capsys):
 
 
 # ------------------------------------------------------------------ as a program
-def test_python_dash_m_structure(tmp_path):
+def test_python_dash_m_kinematics(tmp_path):
     result = subprocess.run(
-        [sys.executable, "-m", "structure", "classify", fixture("fourbar")],
+        [sys.executable, "-m", "kinematics", "classify", fixture("fourbar")],
         capture_output=True,
         text=True,
         encoding="utf-8",
@@ -372,3 +372,18 @@ def test_python_dash_m_structure(tmp_path):
     assert result.returncode == 0, result.stderr
     assert "W = 3·3 − (2·4 + 0) + 0 − 0 = 1" in result.stdout.splitlines()
     assert "Structural formula: I(1) → II(2,3)" in result.stdout.splitlines()
+
+
+def test_python_dash_m_structure_says_where_the_command_line_went(tmp_path):
+    """structure imports nothing of kinematics, so it cannot run the command line itself."""
+    result = subprocess.run(
+        [sys.executable, "-m", "structure", "classify", fixture("fourbar")],
+        capture_output=True,
+        text=True,
+        encoding="utf-8",
+        cwd=tmp_path,
+        timeout=120,
+        check=False,
+    )
+    assert result.returncode == 2
+    assert "python -m kinematics" in result.stderr

@@ -3,7 +3,7 @@
 Two questions, one engine:
 
 * **generic** (topology only): rows are matched to unknowns in file order
-  (:class:`~structure.dulmage_mendelsohn.Matcher`); a row left unmatched is
+  (:class:`~structure.rigidity.matching.Matcher`); a row left unmatched is
   structurally redundant. Free unknowns get probe rows, which makes the system
   square; it is then split into irreducible blocks and every block's
   determinant is checked at a random realization. When all blocks are regular
@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..errors import MechanismError
 from .constraints import (
     ConstraintSystem,
     Realization,
@@ -35,8 +36,7 @@ from .constraints import (
     random_realization,
     row_entries,
 )
-from .dulmage_mendelsohn import Matcher, irreducible_blocks
-from .errors import MechanismError
+from .matching import Matcher, irreducible_blocks
 
 __all__ = [
     "DENSE_LIMIT",
@@ -220,7 +220,7 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     """Generic rank analysis of ``system`` (pair rows, then driver rows).
 
     >>> from structure.model import Mechanism
-    >>> from structure.constraints import constraint_system
+    >>> from structure.rigidity.constraints import constraint_system
     >>> m = Mechanism.from_pairs([("0", "1", "R", "O"), ("1", "2", "R", "p"),
     ...                           ("1", "2", "R", "q")])          # a double pin
     >>> g = generic_rank(constraint_system(m, ["1"]))

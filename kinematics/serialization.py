@@ -1,6 +1,6 @@
 """Kinematic results as plain data (JSON-ready dicts), SI units and radians.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> from kinematics.solve import solve_pose

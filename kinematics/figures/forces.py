@@ -18,10 +18,10 @@ from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .figure_style import _nice, _place, _state_poses, _xy
-from .forces import ForceSolution
-from .plan import SolvePlan
-from .solve import KinematicState, solve_pose
+from ..forces import ForceSolution
+from ..plan import SolvePlan
+from ..solve import KinematicState, solve_pose
+from .style import _nice, _place, _state_poses, _xy
 
 __all__ = ["force_polygon"]
 
@@ -249,7 +249,7 @@ def force_polygon(
 
     Examples
     --------
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> from kinematics.plan import make_plan
     >>> from kinematics.forces import solve_forces

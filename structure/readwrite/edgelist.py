@@ -37,10 +37,9 @@ import os
 from collections.abc import Iterable
 from pathlib import Path
 
-from .errors import EdgeListError, EdgeListProblem
-from .expressions import read_number
-from .jsonformat import mechanism_from_json
-from .model import (
+from ..errors import EdgeListError, EdgeListProblem
+from ..expressions import read_number
+from ..model import (
     DRIVER_KEYS,
     LOAD_KINDS,
     Driver,
@@ -51,7 +50,8 @@ from .model import (
     pair_from_tokens,
     validated,
 )
-from .utils import paused_gc
+from ..utils import paused_gc
+from .jsonformat import mechanism_from_json
 
 __all__ = ["pair_tokens", "parse_edgelist", "read_edgelist", "write_edgelist"]
 

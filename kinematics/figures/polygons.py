@@ -26,10 +26,10 @@ from matplotlib.lines import Line2D
 
 from structure.model import PairKind
 
-from .figure_style import _axes, _nice
-from .plan import SolvePlan
-from .polygons import Term, point_motion, vector_equations
-from .solve import KinematicState
+from ..plan import SolvePlan
+from ..polygons import Term, point_motion, vector_equations
+from ..solve import KinematicState
+from .style import _axes, _nice
 
 __all__ = ["acceleration_polygon", "velocity_polygon"]
 

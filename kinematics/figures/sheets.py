@@ -17,7 +17,7 @@ This module puts them together on sheets (:func:`kinematics_sheet`,
 :func:`structure_sheet`, :func:`forces_sheet`) and saves a figure
 (:func:`save`).
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> from kinematics.solve import solve_pose
@@ -47,14 +47,14 @@ from matplotlib.figure import Figure
 
 from structure.report import StructuralReport
 
-from .force_figures import _draw_loads, _polygon_entries, force_polygon
-from .forces import ForceSolution
-from .graph_figure import draw_graph
-from .mechanism_figure import draw_mechanism
-from .plan import SolvePlan
-from .polygon_figures import acceleration_polygon, velocity_polygon
-from .solve import KinematicState, solve_pose
-from .sweep_figure import sweep_figure
+from ..forces import ForceSolution
+from ..plan import SolvePlan
+from ..solve import KinematicState, solve_pose
+from .forces import _draw_loads, _polygon_entries, force_polygon
+from .graph import draw_graph
+from .mechanism import draw_mechanism
+from .polygons import acceleration_polygon, velocity_polygon
+from .sweep import sweep_figure
 
 __all__ = [
     "acceleration_polygon",

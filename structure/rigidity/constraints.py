@@ -34,8 +34,8 @@ from enum import Enum
 
 import numpy as np
 
-from .errors import EdgeListError, EdgeListProblem
-from .model import Mechanism, PairKind
+from ..errors import EdgeListError, EdgeListProblem
+from ..model import Mechanism, PairKind
 
 __all__ = [
     "ConstraintSystem",

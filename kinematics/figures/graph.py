@@ -21,7 +21,7 @@ from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 from structure.model import Pair
 from structure.report import StructuralReport
 
-from .figure_style import _OTHER_COLOUR, _axes, _palette, _virtual_links
+from .style import _OTHER_COLOUR, _axes, _palette, _virtual_links
 
 __all__ = ["draw_graph"]
 

@@ -15,30 +15,10 @@ from pathlib import Path
 
 import numpy as np
 
-from kinematics.exact import forces_exact, solve_exact
-from kinematics.explain import explain_forces, explain_kinematics
-from kinematics.forces import solve_forces
-from kinematics.gears import (
-    balancing_moment,
-    reduced_inertia,
-    speed_ratios,
-    train_forces,
-    train_losses,
-)
-from kinematics.plan import make_plan
-from kinematics.report import (
-    exact_forces_to_dict,
-    exact_to_dict,
-    forces_to_dict,
-    state_to_dict,
-)
-from kinematics.solve import solve_pose
-from kinematics.sweep import read_inputs, sweep
-
-from .edgelist import read_edgelist
-from .errors import MechanismError, MobilityError
-from .explain import FORMATS, LANGUAGES, explain_structure
-from .report import (
+from structure.errors import MechanismError, MobilityError
+from structure.explain.structural import FORMATS, LANGUAGES, explain_structure
+from structure.readwrite.edgelist import read_edgelist
+from structure.report import (
     all_driver_choices,
     analyze,
     format_mobility_error,
@@ -46,6 +26,26 @@ from .report import (
     mobility_error_dict,
     report_to_dict,
 )
+
+from ..exact import forces_exact, solve_exact
+from ..explain.worked import explain_forces, explain_kinematics
+from ..forces import solve_forces
+from ..gears.trains import (
+    balancing_moment,
+    reduced_inertia,
+    speed_ratios,
+    train_forces,
+    train_losses,
+)
+from ..plan import make_plan
+from ..serialization import (
+    exact_forces_to_dict,
+    exact_to_dict,
+    forces_to_dict,
+    state_to_dict,
+)
+from ..solve import solve_pose
+from ..sweep import read_inputs, sweep
 
 __all__ = ["main"]
 
@@ -220,7 +220,7 @@ def _save_plot(path: str, draw) -> None:
     """
     _check_plot(path)
     try:
-        from kinematics import figures
+        from .. import figures
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise MechanismError("--plot needs matplotlib: pip install 'assur[plot]'") from exc
     try:
@@ -567,7 +567,7 @@ def _animate(args: argparse.Namespace) -> int:
         return 2
     try:
         try:
-            from kinematics.animation import animate, turn_inputs
+            from ..figures.animation import animate, turn_inputs
         except ImportError as exc:  # pragma: no cover - depends on the environment
             raise MechanismError("animate needs matplotlib: pip install 'assur[plot]'") from exc
         report = analyze(read_edgelist(args.file))

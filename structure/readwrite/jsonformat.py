@@ -22,9 +22,9 @@ import json
 import math
 from typing import Any
 
-from .errors import EdgeListError, EdgeListProblem
-from .expressions import read_number
-from .model import (
+from ..errors import EdgeListError, EdgeListProblem
+from ..expressions import read_number
+from ..model import (
     DRIVER_KEYS,
     LOAD_KINDS,
     Driver,

@@ -9,8 +9,8 @@ allow, drivers free), project back onto the constraints by Gauss–Newton and
 recompute the rank. A higher rank there means the sketch was singular; the
 nearby pose is regular and its counts are the mechanism's.
 
->>> from structure.edgelist import parse_edgelist
->>> from structure.constraints import constraint_system, sketch_realization
+>>> from structure import parse_edgelist
+>>> from structure.rigidity.constraints import constraint_system, sketch_realization
 >>> m = parse_edgelist(["0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D", "point A 0 0",
 ...                     "point B 1 0", "point C 3 0", "point D 2 0"])   # a flat parallelogram
 >>> system = constraint_system(m)
@@ -66,7 +66,7 @@ def _moved(
     """The realization of the pose ``z`` (displacements from the sketch) and its pair residuals.
 
     Each row's point is where its pin (or slider) now is; slide directions
-    turn with the pair's first link. With those, :func:`~structure.constraints.jacobian`
+    turn with the pair's first link. With those, :func:`~structure.rigidity.constraints.jacobian`
     gives the exact Jacobian of the residuals at the pose.
     """
     m = system.mechanism

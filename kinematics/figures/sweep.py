@@ -12,8 +12,8 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .plan import SolvePlan
-from .sweep import Sweep
+from ..plan import SolvePlan
+from ..sweep import Sweep
 
 __all__ = ["sweep_figure"]
 
@@ -49,7 +49,7 @@ def sweep_figure(result: Sweep, plan: SolvePlan | None = None) -> Figure:
 
     Examples
     --------
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> from kinematics.plan import make_plan
     >>> from kinematics.sweep import sweep

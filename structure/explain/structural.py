@@ -19,7 +19,7 @@ giá, khâu dẫn, khớp quay, khớp tịnh tiến, bậc tự do, ràng buộ
 do thừa, nhóm tĩnh định, loại, bậc, công thức cấu tạo). All phrases are in
 :data:`PHRASES`.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> r = analyze(parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"]))
 >>> text = explain_structure(r)
@@ -37,10 +37,10 @@ import textwrap
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-from .assur import AssurGroup, roman
-from .mobility import Mobility
-from .model import Mechanism, PairKind
-from .report import StructuralReport
+from ..assur import AssurGroup, roman
+from ..mobility import Mobility
+from ..model import Mechanism, PairKind
+from ..report import StructuralReport
 
 __all__ = [
     "FORMATS",
@@ -765,7 +765,7 @@ def explain_structure(report: StructuralReport, lang: str = "en", fmt: str = "te
 
     Examples
     --------
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> lines = ["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 P C angle=0"]
     >>> r = analyze(parse_edgelist(lines))

@@ -36,7 +36,9 @@ from matplotlib.patches import Arc, Circle, FancyArrowPatch, Polygon
 from structure.model import Pair, PairKind
 from structure.report import StructuralReport
 
-from .figure_style import (
+from ..plan import SolvePlan
+from ..solve import KinematicState
+from .style import (
     _DRIVER_COLOUR,
     _OTHER_COLOUR,
     Poses,
@@ -47,8 +49,6 @@ from .figure_style import (
     _virtual_links,
     _xy,
 )
-from .plan import SolvePlan
-from .solve import KinematicState
 
 __all__ = ["draw_mechanism"]
 

@@ -22,7 +22,7 @@ Every number comes from the actual solve (:func:`~kinematics.solve.solve_pose`,
 unknown from its own equation, which checks the solve. Formats and languages
 are those of :mod:`structure.explain`; the phrases are in :data:`PHRASES`.
 
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> from kinematics.solve import solve_pose
@@ -44,7 +44,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from structure.assur import AssurGroup, GroupPair
-from structure.explain import (
+from structure.explain.structural import (
     Doc,
     Math,
     check_options,
@@ -57,9 +57,9 @@ from structure.explain import (
 from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
-from .forces import ForceSolution, Reaction
-from .plan import DriverStep, GroupStep, SolvePlan
-from .polygons import (
+from ..forces import ForceSolution, Reaction
+from ..plan import DriverStep, GroupStep, SolvePlan
+from ..polygons import (
     Dyad,
     Side,
     VectorEquation,
@@ -74,7 +74,7 @@ from .polygons import (
     slide_direction,
     vector_equations,
 )
-from .solve import KinematicState, solve_pose
+from ..solve import KinematicState, solve_pose
 
 __all__ = ["PHRASES", "angle_of", "explain_forces", "explain_kinematics"]
 
@@ -980,7 +980,7 @@ def explain_kinematics(
 
     Examples
     --------
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> from kinematics.plan import make_plan
     >>> from kinematics.solve import solve_pose
@@ -1639,7 +1639,7 @@ def explain_forces(
 
     Examples
     --------
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> from kinematics.plan import make_plan
     >>> from kinematics.forces import solve_forces

@@ -22,7 +22,7 @@ from matplotlib.lines import Line2D
 
 from structure.report import StructuralReport
 
-from .solve import KinematicState
+from ..solve import KinematicState
 
 __all__: list[str] = []  # private helpers of the figure modules
 

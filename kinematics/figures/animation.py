@@ -7,7 +7,7 @@ paths of the moving points are traced faintly.
 
 >>> import tempfile, pathlib
 >>> from PIL import Image
->>> from structure.edgelist import parse_edgelist
+>>> from structure import parse_edgelist
 >>> from structure.report import analyze
 >>> from kinematics.plan import make_plan
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
@@ -35,10 +35,10 @@ from PIL import Image
 from structure.errors import MechanismError
 from structure.report import StructuralReport
 
-from .mechanism_figure import _draw_scene
-from .plan import SolvePlan
-from .solve import solve_poses
-from .sweep import Sweep
+from ..plan import SolvePlan
+from ..solve import solve_poses
+from ..sweep import Sweep
+from .mechanism import _draw_scene
 
 __all__ = ["animate", "turn_inputs"]
 
@@ -49,7 +49,7 @@ def turn_inputs(plan: SolvePlan, steps: int) -> np.ndarray:
     A sliding driver moves to and fro by a fifth of the sketch's size
     (``0.2·plan.length·sin``), since it has no natural stroke.
 
-    >>> from structure.edgelist import parse_edgelist
+    >>> from structure import parse_edgelist
     >>> from structure.report import analyze
     >>> from kinematics.plan import make_plan
     >>> plan = make_plan(analyze(parse_edgelist(["driver 1", "0 1 R A", "point A 0 0"])))

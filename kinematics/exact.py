@@ -141,9 +141,7 @@ def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
             qd[d.link] = sympy.Matrix([*(-w * _perp(pivot)), w])
             qdd[d.link] = sympy.Matrix([*(-e * _perp(pivot) + w**2 * pivot), e])
         else:
-            slide = next(
-                p for p in m.pairs_of(d.link) if p.other(d.link) == m.ground and p.kind.value == "P"
-            )
+            slide = m.ground_joint(d.link).pair
             u = _unit(slide.angle_deg)
             qd[d.link] = sympy.Matrix([*(w * u), 0])
             qdd[d.link] = sympy.Matrix([*(e * u), 0])
@@ -319,14 +317,7 @@ def forces_exact(plan: SolvePlan) -> ExactForces:
         elif d.kind == "R":
             drive = sympy.Matrix([0, 0, 1])
         else:
-            drive = sympy.Matrix(
-                [
-                    *_unit(
-                        next(p for p in m.pairs_of(d.link) if p.other(d.link) == m.ground).angle_deg
-                    ),
-                    0,
-                ]
-            )
+            drive = sympy.Matrix([*_unit(m.ground_joint(d.link).pair.angle_deg), 0])
         jt = sympy.Matrix.hstack(*cols, drive)
         total = loads.get(d.link, sympy.zeros(3, 1)) + carried.get(d.link, sympy.zeros(3, 1))
         lam = jt.LUsolve(-total)

@@ -137,11 +137,9 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     motion = {d.link: dict(d.motion) for d in report.mechanism.drivers}
     for link in report.drivers:
         values = motion.get(link, {})
-        to_ground = [p for p in m.pairs_of(link) if p.other(link) == m.ground]
-        hinged = [h for h in m.compound_hinges.values() if link in h.links and m.ground in h.links]
-        r_pair = next((p for p in to_ground if p.kind is PairKind.R), None)
-        if r_pair is not None or hinged:
-            point = r_pair.point if r_pair is not None else hinged[0].point
+        joint = m.ground_joint(link)
+        if joint.kind is PairKind.R:
+            point = joint.point
             pivot = _xy(m, point, f"driver {link}'s pivot", problems)
             speed, acc = values.get("omega"), values.get("epsilon", 0.0)
             drivers.append(
@@ -150,7 +148,7 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
                 )
             )
             continue
-        p_pair = next(p for p in to_ground if p.kind is PairKind.P)
+        p_pair = joint.pair
         if p_pair.angle_deg is None:
             problems.append(EdgeListProblem(p_pair.line_no, p_pair.statement, "needs angle="))
         direction = _unit(p_pair.angle_deg)  # v > 0 moves the driver along angle=

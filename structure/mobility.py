@@ -149,14 +149,7 @@ def mobility(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Mobi
 
 
 def _usable_drivers(mechanism: Mechanism, drivers: Sequence[str]) -> tuple[str, ...]:
-    ground = mechanism.ground
-    hinged = {x for h in mechanism.compound_hinges.values() if ground in h.links for x in h.links}
-    return tuple(
-        d
-        for d in drivers
-        if d in hinged
-        or any(p.kind is not PairKind.H and p.other(d) == ground for p in mechanism.pairs_of(d))
-    )
+    return tuple(d for d in drivers if mechanism.ground_joint(d) is not None)
 
 
 def mobility_analysis(

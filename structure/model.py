@@ -34,6 +34,7 @@ __all__ = [
     "DRIVER_KEYS",
     "LOAD_KINDS",
     "Driver",
+    "GroundJoint",
     "Hinge",
     "Load",
     "Mechanism",
@@ -292,6 +293,20 @@ class Hinge:
     pairs: tuple[int, ...]
 
 
+@dataclass(frozen=True, slots=True)
+class GroundJoint:
+    """How a link is jointed to the ground, if it can drive: pinned (R) or sliding (P).
+
+    ``pair`` is the R or P pair with the ground, or None when the link shares
+    a compound hinge with the ground; ``point`` is the pivot of an R joint, or
+    a point of the slide line of a P pair.
+    """
+
+    kind: PairKind
+    pair: Pair | None
+    point: str | None
+
+
 def _freeze_graph(pairs: Iterable[Pair], links: Iterable[str]) -> nx.MultiGraph:
     g = nx.MultiGraph()
     g.add_nodes_from(links)
@@ -438,6 +453,29 @@ class Mechanism:
                     seen.add(other)
                     stack.append(other)
         return seen
+
+    def ground_joint(self, link: str) -> GroundJoint | None:
+        """How ``link`` is jointed to the ground: an R pivot first, else a P slide, else None.
+
+        A link is pinned to the ground by an R pair with it or by a compound
+        hinge it shares with it; higher pairs do not count. This is the one
+        answer to "can this link drive, and about what?".
+
+        >>> m = Mechanism.from_pairs([("0", "1", "R", "A"), ("1", "2", "R", "B"),
+        ...                           ("2", "0", "P", "C", {"angle": 0})])
+        >>> m.ground_joint("1").point, m.ground_joint("2").kind.value, m.ground_joint("9")
+        ('A', 'P', None)
+        """
+        to_ground = [p for p in self._by_link.get(link, ()) if p.other(link) == self.ground]
+        pin = next((p for p in to_ground if p.kind is PairKind.R), None)
+        if pin is not None:
+            return GroundJoint(PairKind.R, pin, pin.point)
+        if link != self.ground:
+            for hinge in self.compound_hinges.values():
+                if link in hinge.links and self.ground in hinge.links:
+                    return GroundJoint(PairKind.R, None, hinge.point)
+        slide = next((p for p in to_ground if p.kind is PairKind.P), None)
+        return None if slide is None else GroundJoint(PairKind.P, slide, slide.point)
 
     @property
     def driver_links(self) -> tuple[str, ...]:

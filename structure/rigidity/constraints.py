@@ -220,12 +220,10 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
 
 def _driver_row(system: ConstraintSystem, link: str) -> tuple[RowKind, int, tuple[int, ...], str]:
     m = system.mechanism
-    kinds = {p.kind for p in m.pairs_of(link) if p.other(link) == m.ground}
-    if any(link in h.links and m.ground in h.links for h in m.compound_hinges.values()):
-        kinds.add(_R)  # pinned to the ground through a compound hinge
-    if _R in kinds:
+    joint = m.ground_joint(link)
+    if joint is not None and joint.kind is _R:
         return _DRIVER, 1, (system.ang[link],), link
-    if _P in kinds:
+    if joint is not None:
         return _DRIVER, 1, (system.pos[link],), link
     raise EdgeListError(
         m.source,

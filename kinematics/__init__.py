@@ -20,7 +20,7 @@ parts that need them).
 from __future__ import annotations
 
 import importlib
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from structure.deprecation import alias_moved_modules
 
@@ -69,14 +69,6 @@ _PUBLIC_BY_MODULE = {
 _PUBLIC = {name: module for module, names in _PUBLIC_BY_MODULE.items() for name in names}
 
 __all__ = sorted(_PUBLIC)
-
-if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors only
-    from .exact import ExactForces, ExactState, forces_exact, solve_exact  # noqa: F401
-    from .forces import ForceSolution, solve_forces  # noqa: F401
-    from .plan import SolvePlan, make_plan  # noqa: F401
-    from .solve import KinematicState, solve_pose, solve_poses  # noqa: F401
-    from .sweep import Sweep, sweep  # noqa: F401
-
 
 def __getattr__(name: str) -> Any:
     module = _PUBLIC.get(name)

@@ -213,11 +213,11 @@ class Doc:
         self.blocks.append(("equation", expression, 0))
 
 
-def _flat(segments: Sequence[Segment]) -> list[Segment]:
+def _flattened(segments: Sequence[Segment]) -> list[Segment]:
     out: list[Segment] = []
     for s in segments:
         if isinstance(s, list):
-            out.extend(_flat(s))
+            out.extend(_flattened(s))
         else:
             out.append(s)
     return out
@@ -263,7 +263,7 @@ def _prose(text: str, fmt: str) -> str:
 def _merged(segments: Sequence[Segment]) -> list[Segment]:
     """Adjacent mathematics joined (``$a$$b$`` would read as display math in Markdown)."""
     out: list[Segment] = []
-    for s in _flat(segments):
+    for s in _flattened(segments):
         if isinstance(s, Math) and out and isinstance(out[-1], Math):
             out[-1] = out[-1] + s
         elif isinstance(s, str) and not s:

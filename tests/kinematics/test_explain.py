@@ -19,6 +19,7 @@ from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
 from kinematics.polygons import vector_equations
 from kinematics.solve import solve_pose
+from structure.expressions import read_number
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 
@@ -40,7 +41,7 @@ def sketch(name: str) -> tuple[dict[str, np.ndarray], float]:
     for line in (FIXTURES / f"{name}.edges").read_text().splitlines():
         tokens = line.split("#")[0].split()
         if tokens[:1] == ["point"]:
-            points[tokens[1]] = np.array([eval(t, {"sqrt": math.sqrt}) for t in tokens[2:4]])
+            points[tokens[1]] = np.array([read_number(t)[0] for t in tokens[2:4]])
         if tokens[:1] == ["driver"]:
             for t in tokens[2:]:
                 if t.startswith("omega="):

@@ -455,8 +455,9 @@ def explain_kinematics(
         From :func:`kinematics.solve.solve_pose` (any pose).
     lang : {"en", "vi"}
         English or Vietnamese.
-    fmt : {"text", "markdown", "latex"}
-        Plain text, Markdown with LaTeX mathematics, or a LaTeX fragment.
+    fmt : {"text", "markdown", "latex", "html"}
+        Plain text, Markdown with LaTeX mathematics, a LaTeX fragment, or an
+        HTML fragment with MathML formulas (see :func:`~structure.explain.document.render`).
 
     Returns
     -------

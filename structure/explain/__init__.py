@@ -1,10 +1,11 @@
 """Worked solutions: the document engine, its phrases and the structural analysis written out.
 
 :mod:`~structure.explain.document` builds and renders a worked solution
-(text, Markdown, LaTeX); :mod:`~structure.explain.phrases` holds the
-structural sentences in English and Vietnamese;
-:mod:`~structure.explain.structural` writes the structural analysis
-(:func:`explain_structure`). :mod:`kinematics.explain` writes the
+(text, Markdown, LaTeX, and HTML whose formulas :mod:`~structure.explain.mathml`
+writes as MathML); :mod:`~structure.explain.phrases` holds the structural
+sentences in English and Vietnamese; :mod:`~structure.explain.structural`
+writes the structural analysis (:func:`explain_structure`).
+:mod:`kinematics.explain` writes the
 kinematics and the forces with the same engine.
 """
 
@@ -21,12 +22,14 @@ from .document import (
     render,
     subscript,
 )
+from .mathml import MATHML_NAMESPACE, latex_to_mathml
 from .phrases import PHRASES
 from .structural import explain_structure
 
 __all__ = [
     "FORMATS",
     "LANGUAGES",
+    "MATHML_NAMESPACE",
     "PHRASES",
     "Doc",
     "Math",
@@ -34,6 +37,7 @@ __all__ = [
     "check_options",
     "explain_structure",
     "formula",
+    "latex_to_mathml",
     "math_join",
     "number",
     "render",

@@ -3,9 +3,11 @@
 A worked solution is built once as a :class:`Doc` (title, headings, paragraphs,
 bullet items, display equations) whose mathematics (:class:`Math`) carries a
 plain (Unicode) and a LaTeX form, and rendered by :func:`render` as ``text``,
-``markdown`` (with ``$…$`` / ``$$…$$`` LaTeX mathematics) or ``latex`` (a
+``markdown`` (with ``$…$`` / ``$$…$$`` LaTeX mathematics), ``latex`` (a
 fragment: ``\\section*``, ``itemize``, ``\\[ … \\]``; it needs ``amsmath`` and
-``amssymb``, and Vietnamese text needs ``\\usepackage[vietnamese]{babel}``).
+``amssymb``, and Vietnamese text needs ``\\usepackage[vietnamese]{babel}``) or
+``html`` (a fragment to embed in a page: its formulas are presentation MathML,
+written from their LaTeX by :mod:`structure.explain.mathml`).
 :mod:`structure.explain.structural` and :mod:`kinematics.explain` write their
 solutions with it.
 
@@ -25,6 +27,9 @@ import string
 import textwrap
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from html import escape
+
+from .mathml import latex_to_mathml
 
 __all__ = [
     "FORMATS",
@@ -41,7 +46,7 @@ __all__ = [
 ]
 
 #: output formats and languages the explanations accept
-FORMATS = ("text", "markdown", "latex")
+FORMATS = ("text", "markdown", "latex", "html")
 LANGUAGES = ("en", "vi")
 
 
@@ -253,6 +258,8 @@ _LATEX_PROSE = {
 
 
 def _prose(text: str, fmt: str) -> str:
+    if fmt == "html":
+        return escape(text, quote=False)
     if fmt == "latex":
         return "".join(_LATEX_PROSE.get(ch, ch) for ch in text)
     if fmt == "markdown":
@@ -277,10 +284,18 @@ def _inline(segments: Sequence[Segment], fmt: str) -> str:
     out = []
     for s in _merged(segments):
         if isinstance(s, Math):
-            out.append(s.text if fmt == "text" else f"${s.latex.strip()}$")
+            out.append(_inline_math(s, fmt))
         else:
             out.append(_prose(s, fmt))
     return "".join(out)
+
+
+def _inline_math(expression: Math, fmt: str) -> str:
+    if fmt == "text":
+        return expression.text
+    if fmt == "html":
+        return latex_to_mathml(expression.latex.strip())
+    return f"${expression.latex.strip()}$"
 
 
 Block = tuple[str, object, int]  # kind, content (segments or Math), item level
@@ -369,22 +384,79 @@ def _latex_lines(blocks: Sequence[Block]) -> list[str]:
     return lines
 
 
-_RENDERERS: dict[str, Callable[[Sequence[Block]], list[str]]] = {
-    "text": _text_lines,
-    "markdown": _markdown_lines,
-    "latex": _latex_lines,
+_HTML_TAG = {"title": "h2", "heading": "h3", "subheading": "h4", "para": "p"}
+
+
+def _html_lines(blocks: Sequence[Block], lang: str) -> list[str]:
+    """An HTML fragment: one ``section``, headings, paragraphs, nested lists, MathML formulas."""
+    lines = [f'<section class="worked-solution" lang="{escape(lang)}">']
+    open_items: list[int | None] = []  # per open list: the line of its open item, if any
+    for kind, content, level in blocks:
+        target = level + 1 if kind == "item" else 0
+        while len(open_items) > target:
+            _close_html_list(lines, open_items)
+        if kind == "equation":
+            assert isinstance(content, Math)
+            lines.append(latex_to_mathml(content.latex.strip(), display=True))
+            continue
+        text = _inline(content, "html")  # type: ignore[arg-type]
+        if kind != "item":
+            lines.append(f"<{_HTML_TAG[kind]}>{text}</{_HTML_TAG[kind]}>")
+            continue
+        if len(open_items) == target:
+            _close_html_item(lines, open_items)
+        while len(open_items) < target:
+            if open_items and open_items[-1] is None:  # a list nested with no item to hold it
+                open_items[-1] = len(lines)
+                lines.append("  " * (2 * len(open_items) - 1) + "<li>")
+            lines.append("  " * 2 * len(open_items) + "<ul>")
+            open_items.append(None)
+        open_items[-1] = len(lines)
+        lines.append("  " * (2 * len(open_items) - 1) + f"<li>{text}")
+    while open_items:
+        _close_html_list(lines, open_items)
+    lines.append("</section>")
+    return lines
+
+
+def _close_html_item(lines: list[str], open_items: list[int | None]) -> None:
+    """End the innermost list's open item: on its own line when a list was nested in it."""
+    opened = open_items[-1]
+    if opened is None:
+        return
+    if opened == len(lines) - 1:
+        lines[-1] += "</li>"
+    else:
+        lines.append("  " * (2 * len(open_items) - 1) + "</li>")
+    open_items[-1] = None
+
+
+def _close_html_list(lines: list[str], open_items: list[int | None]) -> None:
+    _close_html_item(lines, open_items)
+    open_items.pop()
+    lines.append("  " * 2 * len(open_items) + "</ul>")
+
+
+_RENDERERS: dict[str, Callable[[Doc], list[str]]] = {
+    "text": lambda doc: _text_lines(doc.blocks),
+    "markdown": lambda doc: _markdown_lines(doc.blocks),
+    "latex": lambda doc: _latex_lines(doc.blocks),
+    "html": lambda doc: _html_lines(doc.blocks, doc.lang),
 }
 
 
 def render(doc: Doc, fmt: str = "text") -> str:
-    """The document as ``text``, ``markdown`` or ``latex``.
+    """The document as ``text``, ``markdown``, ``latex`` or ``html``.
 
     Parameters
     ----------
     doc : Doc
         The worked solution.
-    fmt : {"text", "markdown", "latex"}
-        The output format.
+    fmt : {"text", "markdown", "latex", "html"}
+        The output format: plain text; Markdown with ``$…$`` LaTeX mathematics; a
+        LaTeX fragment; an HTML fragment (one ``<section class="worked-solution">``
+        with headings ``h2``–``h4``, paragraphs and nested lists, every formula a
+        presentation-MathML ``<math>`` element, all text escaped, no script).
 
     Returns
     -------
@@ -404,9 +476,26 @@ def render(doc: Doc, fmt: str = "text") -> str:
     \\subsection*{Velocities}
     \\[ \\vec{v}_{C} = \\vec{v}_{B} \\]
     <BLANKLINE>
+    >>> from structure.explain.mathml import MATHML_NAMESPACE
+    >>> d = Doc({"en": {}}, "en")
+    >>> d.para("if ", Math("x", "x"), " < 1:"); d.item("a & b"); d.item("nested", level=1)
+    >>> d.equation(Math("x = 1", "x = 1"))
+    >>> print(render(d, "html").replace(f' xmlns="{MATHML_NAMESPACE}"', ""))
+    <section class="worked-solution" lang="en">
+    <p>if <math><mi>x</mi></math> &lt; 1:</p>
+    <ul>
+      <li>a &amp; b
+        <ul>
+          <li>nested</li>
+        </ul>
+      </li>
+    </ul>
+    <math display="block"><mi>x</mi><mo>=</mo><mn>1</mn></math>
+    </section>
+    <BLANKLINE>
     """
     check_options("en", fmt)
-    lines = _RENDERERS[fmt](doc.blocks)
+    lines = _RENDERERS[fmt](doc)
     while lines and lines[-1] == "":
         lines.pop()
     return "\n".join(lines) + "\n"

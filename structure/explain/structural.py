@@ -228,8 +228,9 @@ def explain_structure(report: StructuralReport, lang: str = "en", fmt: str = "te
         From :func:`structure.report.analyze`.
     lang : {"en", "vi"}
         English or Vietnamese (the source's vocabulary).
-    fmt : {"text", "markdown", "latex"}
-        Plain text, Markdown with LaTeX mathematics, or a LaTeX fragment.
+    fmt : {"text", "markdown", "latex", "html"}
+        Plain text, Markdown with LaTeX mathematics, a LaTeX fragment, or an
+        HTML fragment with MathML formulas (see :func:`~structure.explain.document.render`).
 
     Returns
     -------

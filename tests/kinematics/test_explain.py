@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import re
+import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
@@ -19,6 +20,9 @@ from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
 from kinematics.polygons import vector_equations
 from kinematics.solve import solve_pose
+from structure.explain.mathml import MATHML_NAMESPACE
+from structure.explain.structural import explain_structure
+from structure.expressions import read_number
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 
@@ -40,7 +44,7 @@ def sketch(name: str) -> tuple[dict[str, np.ndarray], float]:
     for line in (FIXTURES / f"{name}.edges").read_text().splitlines():
         tokens = line.split("#")[0].split()
         if tokens[:1] == ["point"]:
-            points[tokens[1]] = np.array([eval(t, {"sqrt": math.sqrt}) for t in tokens[2:4]])
+            points[tokens[1]] = np.array([read_number(t)[0] for t in tokens[2:4]])
         if tokens[:1] == ["driver"]:
             for t in tokens[2:]:
                 if t.startswith("omega="):
@@ -388,6 +392,64 @@ def test_forces_in_vietnamese_latex():
     assert tex.count("\\begin{itemize}") == tex.count("\\end{itemize}")
 
 
+# ----------------------------------------------------------------------------- HTML
+MATHML_MATH = f"{{{MATHML_NAMESPACE}}}math"
+NUMBER = re.compile(r"\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def numbers_in(text: str) -> set[str]:
+    """The numbers written in a text; a square (²) counts as the 2 that MathML writes."""
+    return set(NUMBER.findall(text.replace("²", " 2 ")))
+
+
+def formulas_in_markdown(markdown: str) -> int:
+    """The formulas of a solution: its $$…$$ and $…$ spans in Markdown, where text has none."""
+    return len(re.findall(r"\$\$.*?\$\$|\$.*?\$", markdown, re.S))
+
+
+def explanations(name: str, lang: str, fmt: str) -> dict[str, str]:
+    report = analyze(read_edgelist(fixture(name)))
+    plan = make_plan(report)
+    return {
+        "structure": explain_structure(report, lang, fmt),
+        "kinematics": explain_kinematics(report, plan, solve_pose(plan), lang, fmt),
+        "forces": explain_forces(report, plan, solve_forces(plan), lang, fmt),
+    }
+
+
+@pytest.mark.parametrize(
+    "name", ["ch2_2_4_fourbar", "ch2_2_2_slotted_link", "ch3_3_4_fourbar", "ch3_3_9_cam_flat"]
+)
+@pytest.mark.parametrize("lang", ["en", "vi"])
+def test_html_fragment_has_the_formulas_and_numbers_of_the_text(name, lang):
+    html = explanations(name, lang, "html")
+    text = explanations(name, lang, "text")
+    markdown = explanations(name, lang, "markdown")
+    for kind, fragment in html.items():
+        root = ET.fromstring(f"<root>{fragment}</root>")  # well-formed XML, MathML namespaced
+        assert [e.tag for e in root] == ["section"], kind
+        assert sum(1 for _ in root.iter(MATHML_MATH)) == formulas_in_markdown(markdown[kind])
+        assert numbers_in(" ".join(root.itertext())) == numbers_in(text[kind]), kind
+        assert "<script" not in fragment and "href=" not in fragment and "src=" not in fragment
+
+
+def test_html_formulas_are_presentation_mathml():
+    html = explanations("ch2_2_2_slotted_link", "en", "html")["kinematics"]
+    root = ET.fromstring(f"<root>{html}</root>")
+    tags = {e.tag.split("}")[1] for m in root.iter(MATHML_MATH) for e in m.iter()}
+    assert {"mi", "mn", "mo", "msub", "msup", "msubsup", "mover", "mrow"} <= tags
+    shown = [m for m in root.iter(MATHML_MATH) if m.get("display") == "block"]
+    assert shown and all(m.get("display") in ("block", None) for m in root.iter(MATHML_MATH))
+    # the Coriolis term: a^k = 2·ω·v_rel with its numbers, as in the text
+    text = explanations("ch2_2_2_slotted_link", "en", "text")["kinematics"]
+    coriolis = re.search(r"2·ω\d+·v_\w+ = 2·([\d.]+)·([\d.]+) = ([\d.]+) m/s²", text)
+    assert coriolis is not None
+    numbers = [m for m in root.iter(MATHML_MATH) if "2⋅" in "".join(m.itertext())]
+    assert any(
+        all(f"⋅{x}" in "".join(m.itertext()) for x in coriolis.groups()[:2]) for m in numbers
+    )
+
+
 # ----------------------------------------------------------------------------- CLI
 def test_cli_kinematics_and_forces_explain(capsys):
     assert main(["kinematics", fixture("ch2_2_4_fourbar"), "--explain"]) == 0
@@ -414,6 +476,14 @@ def test_cli_explain_usage_errors_exit_2(capsys, argv):
     command, name, *rest = argv
     assert main([command, fixture(name), *rest]) == 2
     assert "error" in capsys.readouterr().err
+
+
+def test_cli_explain_html(capsys):
+    assert main(["forces", fixture("ch3_3_4_fourbar"), "--explain", "html", "--lang", "vi"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith('<section class="worked-solution" lang="vi">\n<h2>Phân tích lực')
+    assert out.endswith("</section>\n")
+    ET.fromstring(f"<root>{out}</root>")
 
 
 def test_cli_forces_explain_of_an_indeterminate_mechanism_exits_1(capsys):

@@ -9,10 +9,12 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 
 import pytest
 
 from kinematics.cli.main import main
+from structure.explain.mathml import MATHML_NAMESPACE as MATHML
 from structure.explain.structural import (
     Math,
     check_options,
@@ -176,10 +178,34 @@ def test_unknown_language_or_format_is_a_value_error():
     r = report("fourbar")
     with pytest.raises(ValueError, match="unknown language 'fr': use one of en, vi"):
         explain_structure(r, lang="fr")
-    with pytest.raises(ValueError, match="unknown format 'html': use one of text, markdown, latex"):
-        explain_structure(r, fmt="html")
+    with pytest.raises(
+        ValueError, match="unknown format 'rtf': use one of text, markdown, latex, html"
+    ):
+        explain_structure(r, fmt="rtf")
     with pytest.raises(ValueError):
         check_options("en", "pdf")
+
+
+def test_html_is_a_section_of_escaped_text_and_mathml():
+    r = report("ch1_1_4a_oxygen_pump")
+    html = explain_structure(r, lang="vi", fmt="html")
+    root = ET.fromstring(f"<root>{html}</root>")  # well-formed: it parses as XML
+    (section,) = root
+    assert section.tag == "section" and section.get("class") == "worked-solution"
+    assert section.get("lang") == "vi"
+    assert [e.tag for e in section if e.tag.startswith("h")][:2] == ["h2", "h3"]
+    maths = list(root.iter(f"{{{MATHML}}}math"))
+    displayed = explain_structure(r, lang="vi", fmt="latex").count("\\[ ")
+    assert [m.get("display") for m in maths].count("block") == displayed == 5
+    formula_ = next(m for m in maths if m.find(f"{{{MATHML}}}mtext") is not None)
+    assert [t.text for t in formula_.iter(f"{{{MATHML}}}mtext")] == [
+        "I(1)",
+        "II(2,v1)",
+        "III(3,4,5,6)",
+    ]
+    assert "<script" not in html and "href" not in html and "src=" not in html
+    text = explain_structure(r, lang="vi")
+    assert set(re.findall(r"\d+", text)) == set(re.findall(r"\d+", " ".join(root.itertext())))
 
 
 def test_math_pieces():
@@ -216,7 +242,7 @@ def test_classify_explain(capsys):
     "argv",
     [
         ["--explain", "--lang", "fr"],
-        ["--explain", "html"],
+        ["--explain", "rtf"],
         ["--lang", "xx"],
         ["--explain", "--json"],
     ],

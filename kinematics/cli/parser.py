@@ -1,8 +1,9 @@
 """The ``assur`` argument parser: every command and its options, the shared ones declared once.
 
-Building the parser imports no solver, sympy or matplotlib module. A new command is
-one entry in :data:`COMMANDS` (its name, its help line and the function that adds
-its arguments), plus its runner in :mod:`kinematics.cli.main`'s dispatch table.
+Building the parser imports no kinematics solver and no matplotlib: of the project it
+needs only the ``--explain`` formats and languages. A new command is one entry in
+:data:`COMMANDS` (its name, its help line and the function that adds its arguments),
+plus its runner in :data:`kinematics.cli.main.RUNNERS`.
 """
 
 from __future__ import annotations
@@ -25,9 +26,9 @@ _COORDINATES_FILE = "edge-list file with point coordinates and driver motion"
 
 
 # ------------------------------------------------------------------ shared options
-def _add_file(command: argparse.ArgumentParser, help: str) -> None:
-    """The FILE argument: the mechanism to read (what it must hold, in ``help``)."""
-    command.add_argument("file", help=help)
+def _add_file(command: argparse.ArgumentParser, holds: str) -> None:
+    """The FILE argument: the mechanism to read; ``holds`` says what the file must hold."""
+    command.add_argument("file", help=holds)
 
 
 def _add_json(command: argparse.ArgumentParser) -> None:
@@ -70,13 +71,14 @@ def _add_steps(command: argparse.ArgumentParser, default: int, counted: str) -> 
     )
 
 
-def _add_inputs(command: argparse.ArgumentParser, help: str) -> None:
-    """``--inputs FILE``: the driver inputs to solve instead of one turn."""
-    command.add_argument("--inputs", metavar="FILE", help=help)
+def _add_inputs(command: argparse.ArgumentParser, meaning: str) -> None:
+    """``--inputs FILE``: the driver inputs to solve instead of one turn, as ``meaning`` says."""
+    command.add_argument("--inputs", metavar="FILE", help=meaning)
 
 
 # ------------------------------------------------------------------ the commands
 def _classify_arguments(command: argparse.ArgumentParser) -> None:
+    """``classify FILE [--driver L]... [--all-drivers] [--json] [--plot OUT] [--explain]``."""
     _add_file(command, "edge-list file (.edges) or its JSON form (.json)")
     command.add_argument(
         "--driver", action="append", metavar="L", help="driving link (repeat for several)"
@@ -95,6 +97,7 @@ def _classify_arguments(command: argparse.ArgumentParser) -> None:
 
 
 def _kinematics_arguments(command: argparse.ArgumentParser) -> None:
+    """``kinematics FILE [--json] [--exact] [--plot OUT] [--flip GROUP]... [--explain]``."""
     _add_file(command, _COORDINATES_FILE)
     _add_json(command)
     _add_exact(command)
@@ -110,6 +113,7 @@ def _kinematics_arguments(command: argparse.ArgumentParser) -> None:
 
 
 def _forces_arguments(command: argparse.ArgumentParser) -> None:
+    """``forces FILE [--json] [--exact] [--minimum-norm] [--plot OUT] [--explain]``."""
     _add_file(command, "edge-list file with coordinates, driver motion and loads")
     _add_json(command)
     _add_exact(command)
@@ -123,6 +127,7 @@ def _forces_arguments(command: argparse.ArgumentParser) -> None:
 
 
 def _gears_arguments(command: argparse.ArgumentParser) -> None:
+    """``gears FILE [--json] [--efficiency ETA]``."""
     _add_file(command, "edge-list file with 'a b H gear z=za,zb' meshes")
     _add_json(command)
     command.add_argument(
@@ -134,6 +139,7 @@ def _gears_arguments(command: argparse.ArgumentParser) -> None:
 
 
 def _sweep_arguments(command: argparse.ArgumentParser) -> None:
+    """``sweep FILE [--steps N] [--csv OUT] [--inputs FILE] [--plot OUT]``."""
     _add_file(command, _COORDINATES_FILE)
     _add_steps(command, 360, "poses")
     command.add_argument("--csv", metavar="OUT", help="write every pose to this CSV file")
@@ -146,6 +152,7 @@ def _sweep_arguments(command: argparse.ArgumentParser) -> None:
 
 
 def _animate_arguments(command: argparse.ArgumentParser) -> None:
+    """``animate FILE OUT [--steps N] [--fps FPS] [--inputs FILE]``."""
     _add_file(command, "edge-list file with point coordinates")
     command.add_argument("out", metavar="OUT", help="the animation: .gif (or .mp4 with ffmpeg)")
     _add_steps(command, 36, "frames")
@@ -184,6 +191,6 @@ def build_parser() -> argparse.ArgumentParser:
     """
     parser = argparse.ArgumentParser(prog="assur", description=_DESCRIPTION)
     sub = parser.add_subparsers(dest="command", required=True)
-    for name, help, add_arguments in COMMANDS:
-        add_arguments(sub.add_parser(name, help=help))
+    for name, summary, add_arguments in COMMANDS:
+        add_arguments(sub.add_parser(name, help=summary))
     return parser

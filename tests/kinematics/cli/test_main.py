@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import importlib
 import subprocess
 import sys
 
 import pytest
 
-from .conftest import fixture, run
+from kinematics.cli.main import RUNNERS
+from kinematics.cli.parser import COMMANDS
+
+from .conftest import ROOT, fixture, run
 
 
 # ------------------------------------------------------------------ usage errors: exit 2
@@ -63,3 +67,43 @@ def test_python_dash_m_structure_says_where_the_command_line_went(tmp_path):
     )
     assert result.returncode == 2
     assert "python -m kinematics" in result.stderr
+
+
+# ------------------------------------------------------------------ the dispatch table
+def test_every_command_has_a_runner():
+    """Each command the parser knows is dispatched to a function of a module of the CLI."""
+    assert {name for name, _, _ in COMMANDS} == set(RUNNERS)
+    for module_name, function_name in RUNNERS.values():
+        module = importlib.import_module(f"kinematics.cli.{module_name}")
+        assert callable(getattr(module, function_name))
+
+
+def test_classify_starts_without_the_solvers_or_matplotlib():
+    """Issue 12: ``assur classify`` imports only the structure side and the CLI's cheap modules."""
+    script = (
+        "import sys\n"
+        "from kinematics.cli.main import main\n"
+        f"assert main(['classify', {fixture('fourbar')!r}]) == 0\n"
+        "print(' '.join(sorted(sys.modules)))\n"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", script],
+        capture_output=True,
+        text=True,
+        encoding="utf-8",
+        cwd=ROOT,  # this checkout's packages, not an installed copy
+        timeout=120,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    loaded = set(result.stdout.splitlines()[-1].split())
+    assert "matplotlib" not in loaded
+    kinematics = {name for name in loaded if name.startswith("kinematics.")}
+    assert kinematics <= {
+        "kinematics.cli",
+        "kinematics.cli.classify",
+        "kinematics.cli.main",
+        "kinematics.cli.output",
+        "kinematics.cli.parser",
+        "kinematics.cli.plotting",
+    }

@@ -1,30 +1,15 @@
-"""Tests of the ``assur`` command line (kinematics.cli): classify and the program itself."""
+"""``assur classify`` (kinematics.cli.classify): text, JSON, drivers and mechanism errors."""
 
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
-from pathlib import Path
 
 import pytest
 
-from kinematics.cli.main import main
 from structure.readwrite.edgelist import read_edgelist
 from structure.readwrite.jsonformat import mechanism_to_json
 
-ROOT = Path(__file__).resolve().parents[2]
-FIXTURES = ROOT / "fixtures"
-
-
-def fixture(name: str) -> str:
-    return str(FIXTURES / f"{name}.edges")
-
-
-def run(capsys, *argv: str) -> tuple[int, str, str]:
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
+from .conftest import fixture, run
 
 
 def run_json(capsys, *argv: str) -> dict:
@@ -332,58 +317,3 @@ def test_rigid_truss_exits_1(capsys, tmp_path):
     report = json.loads(out)
     assert (report["n"], report["P5"], report["W"]) == (2, 3, 0)
     assert "W = 0" in report["error"]
-
-
-# ------------------------------------------------------------------ usage errors: exit 2
-@pytest.mark.parametrize(
-    "argv",
-    [
-        pytest.param(["classify", fixture("fourbar"), "--bogus"], id="unknown-option"),
-        pytest.param(["classify"], id="missing-file"),
-        pytest.param([], id="no-command"),
-        pytest.param(["solve", fixture("fourbar")], id="unknown-command"),
-        pytest.param(["classify", fixture("fourbar"), "--driver"], id="driver-without-link"),
-    ],
-)
-def test_usage_error_exits_2(capsys, argv):
-    code, out, err = run(capsys, *argv)
-    assert code == 2
-    assert out == ""
-    assert "usage:" in err
-
-
-def test_help_exits_0(capsys):
-    code, out, _ = run(capsys, "classify", "--help")
-    assert code == 0
-    assert "--all-drivers" in out
-
-
-# ------------------------------------------------------------------ as a program
-def test_python_dash_m_kinematics(tmp_path):
-    result = subprocess.run(
-        [sys.executable, "-m", "kinematics", "classify", fixture("fourbar")],
-        capture_output=True,
-        text=True,
-        encoding="utf-8",
-        cwd=tmp_path,
-        timeout=120,
-        check=False,
-    )
-    assert result.returncode == 0, result.stderr
-    assert "W = 3·3 − (2·4 + 0) + 0 − 0 = 1" in result.stdout.splitlines()
-    assert "Structural formula: I(1) → II(2,3)" in result.stdout.splitlines()
-
-
-def test_python_dash_m_structure_says_where_the_command_line_went(tmp_path):
-    """structure imports nothing of kinematics, so it cannot run the command line itself."""
-    result = subprocess.run(
-        [sys.executable, "-m", "structure", "classify", fixture("fourbar")],
-        capture_output=True,
-        text=True,
-        encoding="utf-8",
-        cwd=tmp_path,
-        timeout=120,
-        check=False,
-    )
-    assert result.returncode == 2
-    assert "python -m kinematics" in result.stderr

@@ -1,4 +1,4 @@
-"""The kinematics commands of the `assur` command line."""
+"""``assur kinematics`` (kinematics.cli.motion): JSON, text, exact values, --flip, --plot."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import json
 
 from kinematics.cli.main import main
 
-from ..conftest import FIXTURES
+from ...conftest import FIXTURES
 
 
 def test_kinematics_json_has_links_and_points(capsys):

@@ -1,0 +1,51 @@
+"""``assur classify``: mobility, replacement, Assur groups, class, as text, JSON or worked text.
+
+Imports the structure package only: no solver, no matplotlib (they come with ``--plot``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from structure.errors import MechanismError, MobilityError
+from structure.explain.structural import explain_structure
+from structure.readwrite.edgelist import read_edgelist
+from structure.report import (
+    all_driver_choices,
+    analyze,
+    format_mobility_error,
+    format_report,
+    mobility_error_dict,
+    report_to_dict,
+)
+
+from .output import EXIT_MECHANISM, EXIT_OK, failed, print_json
+from .plotting import check_plot, load_drawing
+
+__all__ = ["run_classify"]
+
+
+def run_classify(args: argparse.Namespace) -> int:
+    """Classify the mechanism in ``args.file``; returns the exit code."""
+    try:
+        check_plot(args.plot)
+        report = analyze(read_edgelist(args.file), args.driver)
+        choices = all_driver_choices(report) if args.all_drivers else ()
+        if args.plot:
+            load_drawing().save_structure_sheet(report, args.plot)
+    except MobilityError as exc:
+        if args.json:
+            print_json(mobility_error_dict(exc))
+        else:
+            sys.stderr.write(format_mobility_error(exc))
+        return EXIT_MECHANISM
+    except MechanismError as exc:
+        return failed(exc, args.json)
+    if args.json:
+        print_json(report_to_dict(report, choices))
+    elif args.explain:
+        sys.stdout.write(explain_structure(report, args.lang, args.explain))
+    else:
+        sys.stdout.write(format_report(report, choices))
+    return EXIT_OK

@@ -1,0 +1,79 @@
+"""The figures the command line saves (imports matplotlib: load it through ``load_drawing``).
+
+Each ``save_*`` function draws one sheet and writes it to the path; a path
+matplotlib cannot write is a :class:`MechanismError`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from structure.errors import MechanismError
+
+from .. import figures
+from ..figures.animation import animate, turn_inputs
+from ..plan import make_plan
+from ..solve import solve_pose
+
+if TYPE_CHECKING:  # pragma: no cover - annotations only
+    from structure.report import StructuralReport
+
+    from ..forces import ForceSolution
+    from ..plan import SolvePlan
+    from ..solve import KinematicState
+    from ..sweep import Sweep
+
+__all__ = [
+    "animate",
+    "save_forces_sheet",
+    "save_kinematics_sheet",
+    "save_structure_sheet",
+    "save_sweep_figure",
+    "turn_inputs",
+]
+
+
+def _save(path: str, draw: Callable[[], object]) -> None:
+    """Save the figure ``draw()`` makes to ``path``, errors as :class:`MechanismError`."""
+    try:
+        figures.save(draw(), path)
+    except ValueError as exc:
+        raise MechanismError(str(exc)) from exc
+    except OSError as exc:
+        raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
+
+
+def save_structure_sheet(report: StructuralReport, path: str) -> None:
+    """The kinematic graph, with the mechanism at its sketch pose when the file has one."""
+    _save(path, lambda: figures.structure_sheet(report, *_sketch_pose(report)))
+
+
+def _sketch_pose(report: StructuralReport) -> tuple[SolvePlan | None, KinematicState | None]:
+    """The plan and the state at the sketch pose, or ``(None, None)`` for a graph alone."""
+    if not report.mechanism.points:
+        return None, None
+    try:
+        plan = make_plan(report)
+        return plan, solve_pose(plan)
+    except MechanismError:  # an incomplete sketch: the graph alone
+        return None, None
+
+
+def save_kinematics_sheet(
+    report: StructuralReport, plan: SolvePlan, state: KinematicState, path: str
+) -> None:
+    """The mechanism with its velocity and acceleration polygons."""
+    _save(path, lambda: figures.kinematics_sheet(report, plan, state))
+
+
+def save_forces_sheet(
+    report: StructuralReport, plan: SolvePlan, forces: ForceSolution, path: str
+) -> None:
+    """The mechanism with the force polygon of each group and driver."""
+    _save(path, lambda: figures.forces_sheet(report, plan, forces))
+
+
+def save_sweep_figure(result: Sweep, plan: SolvePlan, path: str) -> None:
+    """Paths, ω, ε, |v|, |a|, transmission angles and balancing over the sweep."""
+    _save(path, lambda: figures.sweep_figure(result, plan))

@@ -1,0 +1,186 @@
+"""``assur kinematics``, ``sweep`` and ``animate``: the motion at the sketch pose and over a turn.
+
+Text, JSON (``--json``), exact values (``--exact``) or the worked solution (``--explain``)
+of one pose; the ranges over a sweep and its CSV; an animation of the turn.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from structure.errors import MechanismError
+from structure.readwrite.edgelist import read_edgelist
+from structure.report import analyze
+
+from ..exact import solve_exact
+from ..explain.worked import explain_kinematics
+from ..plan import make_plan
+from ..serialization import exact_to_dict, state_to_dict
+from ..solve import solve_pose
+from ..sweep import read_inputs, sweep
+from .output import (
+    EXIT_OK,
+    EXIT_USAGE,
+    fail,
+    failed,
+    print_json,
+    title_lines,
+    vector,
+    write_lines,
+)
+from .plotting import check_plot, load_drawing
+
+if TYPE_CHECKING:  # pragma: no cover - annotations only
+    from structure.report import StructuralReport
+
+    from ..plan import SolvePlan
+    from ..solve import KinematicState
+    from ..sweep import Sweep
+
+__all__ = ["run_animate", "run_kinematics", "run_sweep"]
+
+
+def run_kinematics(args: argparse.Namespace) -> int:
+    """Solve the sketch pose of ``args.file`` group by group; returns the exit code."""
+    try:
+        report = analyze(read_edgelist(args.file))
+        plan = make_plan(report, flip=args.flip)
+        if args.exact:
+            return _print_exact(report, plan, args.json)
+        state = solve_pose(plan)
+        if args.plot:
+            check_plot(args.plot)
+            load_drawing().save_kinematics_sheet(report, plan, state, args.plot)
+    except MechanismError as exc:
+        return failed(exc, args.json)
+    except ValueError as exc:  # a --flip that names no dyad
+        return fail(str(exc), EXIT_USAGE)
+    if args.json:
+        print_json(state_to_dict(state))
+    elif args.explain:
+        sys.stdout.write(explain_kinematics(report, plan, state, args.lang, args.explain))
+    else:
+        write_lines(_kinematics_lines(report, plan, state))
+    return EXIT_OK
+
+
+def _kinematics_lines(
+    report: StructuralReport, plan: SolvePlan, state: KinematicState
+) -> list[str]:
+    """The text answer: drivers, solve order, then every link and point."""
+    out = title_lines(report.mechanism)
+    for d in plan.drivers:
+        unit = ("ω", "rad/s", "ε", "rad/s²") if d.kind == "R" else ("v", "m/s", "a", "m/s²")
+        assumed = "" if d.speed_given else " (not given in the file: assumed 0)"
+        out.append(
+            f"Driver {d.link}: {unit[0]} = {d.speed:g} {unit[1]}, "
+            f"{unit[2]} = {d.acceleration:g} {unit[3]}{assumed}"
+        )
+    out.append("")
+    out.append("Solved in this order:")
+    for i, step in enumerate(plan.steps, start=1):
+        kind = f" {step.kind}" if step.kind else ""
+        out.append(f"  {i}. {step.label}{kind}: links {', '.join(step.links)}")
+    out.append("")
+    out.append("Links (angle turned from the sketch):")
+    for name, link in state.links.items():
+        out.append(
+            f"  {name}: angle {link.angle:.6g} rad, ω = {link.omega:.6g} rad/s, "
+            f"ε = {link.epsilon:.6g} rad/s²"
+        )
+    out.append("")
+    out.append("Points:")
+    for name, point in state.points.items():
+        out.append(
+            f"  {name} (on {point.link}): position {vector(point.position)} m, "
+            f"v = {vector(point.velocity)} m/s (|v| = {float(np.hypot(*point.velocity)):.6g}), "
+            f"a = {vector(point.acceleration)} m/s² "
+            f"(|a| = {float(np.hypot(*point.acceleration)):.6g})"
+        )
+    return out
+
+
+def _print_exact(report: StructuralReport, plan: SolvePlan, as_json: bool) -> int:
+    """Print the exact velocities and accelerations at the sketch pose (sympy)."""
+    state = solve_exact(plan)
+    if as_json:
+        print_json(exact_to_dict(state))
+        return EXIT_OK
+    out = title_lines(report.mechanism, ", exact values at the sketch pose")
+    for name, values in state.links.items():
+        out.append(f"  {name}: ω = {values['omega']} rad/s, ε = {values['epsilon']} rad/s²")
+    out.append("")
+    for name, values in state.points.items():
+        v, a = values["velocity"], values["acceleration"]
+        out.append(f"  {name}: v = ({v[0]}, {v[1]}) m/s, a = ({a[0]}, {a[1]}) m/s²")
+    write_lines(out)
+    return EXIT_OK
+
+
+def run_sweep(args: argparse.Namespace) -> int:
+    """Solve ``args.steps`` poses over a turn (or the ``--inputs`` poses); returns the exit code."""
+    if args.steps < 1:
+        return fail("--steps must be at least 1", EXIT_USAGE)
+    try:
+        check_plot(args.plot)
+        plan = make_plan(analyze(read_edgelist(args.file)))
+        inputs = read_inputs(args.inputs, plan) if args.inputs else None
+        result = sweep(plan, inputs, steps=args.steps)
+        if args.plot:
+            load_drawing().save_sweep_figure(result, plan, args.plot)
+    except MechanismError as exc:
+        return fail(str(exc))
+    out = _sweep_lines(args, result)
+    if args.csv:
+        with open(args.csv, "w", encoding="utf-8") as handle:
+            handle.write(result.to_csv())
+        out.append(f"wrote {args.csv}")
+    write_lines(out)
+    return EXIT_OK
+
+
+def _sweep_lines(args: argparse.Namespace, result: Sweep) -> list[str]:
+    """The text answer of a sweep: the ranges of ω, ε, transmission angles and balancing."""
+    if args.inputs:
+        out = [f"{len(result.inputs)} poses of {args.inputs} for {args.file}", ""]
+    else:
+        out = [f"{args.steps} poses over one turn of the driver(s) of {args.file}", ""]
+    out.append("link   ω min … max (rad/s)        ε min … max (rad/s²)")
+    for name, values in result.links.items():
+        w, e = values["omega"], values["epsilon"]
+        out.append(
+            f"{name:6} {w.min():11.6g} … {w.max():<11.6g} {e.min():11.6g} … {e.max():<11.6g}"
+        )
+    for label, mu in result.transmission.items():
+        out.append(
+            f"transmission angle of {label}: {np.degrees(mu.min()):.4g}° … "
+            f"{np.degrees(mu.max()):.4g}°"
+        )
+    for name, values in result.balancing.items():
+        out.append(f"balancing {name}: {values.min():.6g} … {values.max():.6g}")
+    return out
+
+
+def run_animate(args: argparse.Namespace) -> int:
+    """Write an animation of the mechanism over a turn to ``args.out``; returns the exit code."""
+    if args.steps < 1 or not args.fps > 0:
+        return fail("--steps must be at least 1 and --fps positive", EXIT_USAGE)
+    try:
+        drawing = load_drawing("animate")
+        report = analyze(read_edgelist(args.file))
+        plan = make_plan(report)
+        if args.inputs:
+            inputs = read_inputs(args.inputs, plan)
+        else:
+            inputs = drawing.turn_inputs(plan, args.steps)
+        drawing.animate(report, plan, inputs, args.out, fps=args.fps)
+    except MechanismError as exc:
+        return fail(str(exc))
+    except OSError as exc:
+        return fail(f"cannot write {args.out}: {exc.strerror or exc}")
+    sys.stdout.write(f"wrote {args.out}: {len(inputs)} frames at {args.fps:g} frames/s\n")
+    return EXIT_OK

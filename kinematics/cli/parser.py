@@ -1,0 +1,196 @@
+"""The ``assur`` argument parser: every command and its options, the shared ones declared once.
+
+Building the parser imports no kinematics solver and no matplotlib: of the project it
+needs only the ``--explain`` formats and languages. A new command is one entry in
+:data:`COMMANDS` (its name, its help line and the function that adds its arguments),
+plus its runner in :data:`kinematics.cli.main.RUNNERS`.
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Callable
+
+from structure.explain.structural import FORMATS, LANGUAGES
+
+from .plotting import PLOT_FORMATS
+
+__all__ = ["COMMANDS", "build_parser"]
+
+_DESCRIPTION = (
+    "Planar mechanisms by Assur groups: structure, kinematics, forces, gear "
+    "trains, figures and worked solutions."
+)
+
+_COORDINATES_FILE = "edge-list file with point coordinates and driver motion"
+
+
+# ------------------------------------------------------------------ shared options
+def _add_file(command: argparse.ArgumentParser, holds: str) -> None:
+    """The FILE argument: the mechanism to read; ``holds`` says what the file must hold."""
+    command.add_argument("file", help=holds)
+
+
+def _add_json(command: argparse.ArgumentParser) -> None:
+    """``--json``: the answer as one JSON object."""
+    command.add_argument("--json", action="store_true", help="print one JSON object")
+
+
+def _add_exact(command: argparse.ArgumentParser) -> None:
+    """``--exact``: exact values with sympy."""
+    command.add_argument(
+        "--exact", action="store_true", help="exact values (radicals, fractions) with sympy"
+    )
+
+
+def _add_plot(command: argparse.ArgumentParser, draws: str) -> None:
+    """``--plot OUT``: save a figure of what ``draws`` says, in one of the plot formats."""
+    command.add_argument("--plot", metavar="OUT", help=f"{draws} ({', '.join(PLOT_FORMATS)})")
+
+
+def _add_explain(command: argparse.ArgumentParser) -> None:
+    """``--explain [FORMAT]`` and ``--lang``: the worked solution instead of the plain answer."""
+    command.add_argument(
+        "--explain",
+        nargs="?",
+        const="text",
+        choices=FORMATS,
+        metavar="FORMAT",
+        help="print the worked solution, step by step as the textbook writes it: "
+        "text (default), markdown or latex",
+    )
+    command.add_argument(
+        "--lang", choices=LANGUAGES, default="en", help="language of --explain (default en)"
+    )
+
+
+def _add_steps(command: argparse.ArgumentParser, default: int, counted: str) -> None:
+    """``--steps N``: how many ``counted`` (poses, frames) per turn of the driver(s)."""
+    command.add_argument(
+        "--steps", type=int, default=default, help=f"{counted} per turn (default {default})"
+    )
+
+
+def _add_inputs(command: argparse.ArgumentParser, meaning: str) -> None:
+    """``--inputs FILE``: the driver inputs to solve instead of one turn, as ``meaning`` says."""
+    command.add_argument("--inputs", metavar="FILE", help=meaning)
+
+
+# ------------------------------------------------------------------ the commands
+def _classify_arguments(command: argparse.ArgumentParser) -> None:
+    """``classify FILE [--driver L]... [--all-drivers] [--json] [--plot OUT] [--explain]``."""
+    _add_file(command, "edge-list file (.edges) or its JSON form (.json)")
+    command.add_argument(
+        "--driver", action="append", metavar="L", help="driving link (repeat for several)"
+    )
+    command.add_argument(
+        "--all-drivers",
+        action="store_true",
+        help="list the groups for every admissible driver choice",
+    )
+    _add_json(command)
+    _add_plot(
+        command,
+        "draw the kinematic graph (and the mechanism, when the file has coordinates)",
+    )
+    _add_explain(command)
+
+
+def _kinematics_arguments(command: argparse.ArgumentParser) -> None:
+    """``kinematics FILE [--json] [--exact] [--plot OUT] [--flip GROUP]... [--explain]``."""
+    _add_file(command, _COORDINATES_FILE)
+    _add_json(command)
+    _add_exact(command)
+    _add_plot(command, "draw the mechanism and its velocity and acceleration polygons")
+    command.add_argument(
+        "--flip",
+        action="append",
+        metavar="GROUP",
+        default=[],
+        help="assemble this dyad (e.g. 'II(2,3)') in the other mode than the sketch's",
+    )
+    _add_explain(command)
+
+
+def _forces_arguments(command: argparse.ArgumentParser) -> None:
+    """``forces FILE [--json] [--exact] [--minimum-norm] [--plot OUT] [--explain]``."""
+    _add_file(command, "edge-list file with coordinates, driver motion and loads")
+    _add_json(command)
+    _add_exact(command)
+    command.add_argument(
+        "--minimum-norm",
+        action="store_true",
+        help="for an over-constrained mechanism, give the minimum-norm reactions",
+    )
+    _add_plot(command, "draw the mechanism and the force polygon of each group and driver")
+    _add_explain(command)
+
+
+def _gears_arguments(command: argparse.ArgumentParser) -> None:
+    """``gears FILE [--json] [--efficiency ETA]``."""
+    _add_file(command, "edge-list file with 'a b H gear z=za,zb' meshes")
+    _add_json(command)
+    command.add_argument(
+        "--efficiency",
+        type=float,
+        metavar="ETA",
+        help="efficiency of each mesh (e.g. 0.98): losses, balancing moment with them",
+    )
+
+
+def _sweep_arguments(command: argparse.ArgumentParser) -> None:
+    """``sweep FILE [--steps N] [--csv OUT] [--inputs FILE] [--plot OUT]``."""
+    _add_file(command, _COORDINATES_FILE)
+    _add_steps(command, 360, "poses")
+    command.add_argument("--csv", metavar="OUT", help="write every pose to this CSV file")
+    _add_inputs(
+        command,
+        "the poses to solve instead of one turn: a line per pose, a column per driver "
+        "(degrees, or metres for a sliding driver); a first line 'drivers 4 1' sets the order",
+    )
+    _add_plot(command, "plot paths, ω, ε, |v|, |a|, transmission angle, balancing")
+
+
+def _animate_arguments(command: argparse.ArgumentParser) -> None:
+    """``animate FILE OUT [--steps N] [--fps FPS] [--inputs FILE]``."""
+    _add_file(command, "edge-list file with point coordinates")
+    command.add_argument("out", metavar="OUT", help="the animation: .gif (or .mp4 with ffmpeg)")
+    _add_steps(command, 36, "frames")
+    command.add_argument("--fps", type=float, default=12.0, help="frames per second (default 12)")
+    _add_inputs(command, "the frames' driver inputs, as for 'assur sweep --inputs'")
+
+
+#: every command, in the order ``assur --help`` lists them: name, help line, its arguments
+COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...] = (
+    (
+        "classify",
+        "mobility, higher-pair replacement, Assur groups, class and structural formula",
+        _classify_arguments,
+    ),
+    (
+        "kinematics",
+        "positions, velocities and accelerations at the sketch pose, group by group",
+        _kinematics_arguments,
+    ),
+    ("forces", "joint reactions and balancing moment, farthest group first", _forces_arguments),
+    (
+        "gears",
+        "gear train: meshes, carriers, DOF, exact speed ratios, balancing moment",
+        _gears_arguments,
+    ),
+    ("sweep", "the kinematics over a whole turn of the driver(s)", _sweep_arguments),
+    ("animate", "an animation of the mechanism over one turn of the driver(s)", _animate_arguments),
+)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The ``assur`` parser: one sub-command per entry of :data:`COMMANDS`.
+
+    >>> build_parser().parse_args(["sweep", "m.edges"]).steps
+    360
+    """
+    parser = argparse.ArgumentParser(prog="assur", description=_DESCRIPTION)
+    sub = parser.add_subparsers(dest="command", required=True)
+    for name, summary, add_arguments in COMMANDS:
+        add_arguments(sub.add_parser(name, help=summary))
+    return parser

@@ -4,8 +4,10 @@
 it drawn head to tail, a closed polygon: ``Annotation`` arrows with gid
 ``force:<key>`` (``load:<link>:<point>``, ``weight:<link>``,
 ``inertia:<link>``, ``reaction:<from>-><on>:<point>``, ``balance:<link>``),
-the scale ``μ_F = 10 N/unit`` in the title; :func:`kinematics.figures.forces_sheet`
-also draws the applied forces on the mechanism (gid ``load:<link>:<point>``).
+the scale ``μ_F = 10 N/unit`` in the title; :func:`draw_loads` draws the
+applied forces on the mechanism (gid ``load:<link>:<point>``) and
+:func:`polygon_entries` lists the panels, for
+:func:`kinematics.figures.sheets.forces_sheet`.
 """
 
 from __future__ import annotations
@@ -21,9 +23,9 @@ from matplotlib.figure import Figure
 from ..forces import ForceSolution
 from ..plan import SolvePlan
 from ..solve import KinematicState, solve_pose
-from .style import _nice, _place, _state_poses, _xy
+from .style import nice_scale, place, point_xy, state_poses
 
-__all__ = ["force_polygon"]
+__all__ = ["draw_loads", "force_polygon", "polygon_entries"]
 
 
 @dataclass(frozen=True)
@@ -91,11 +93,11 @@ def _forces_on(
             if state is None:
                 state = solve_pose(plan)
             ls = state.links.get(load.link)
-            c = _xy(m, load.point)
+            c = point_xy(m, load.point)
             if ls is None or c is None:
                 continue
             theta, omega, eps = float(ls.q[2]), float(ls.qd[2]), float(ls.qdd[2])
-            rc = _place({load.link: np.array([0.0, 0.0, theta])}, load.link, c)
+            rc = place({load.link: np.array([0.0, 0.0, theta])}, load.link, c)
             a_s = np.asarray(ls.qdd[:2], dtype=float) + eps * np.array([-rc[1], rc[0]])
             a_s = a_s - omega**2 * rc
             add(f"inertia:{load.link}", f"Φ{load.link}", -mass * a_s, "inertia")
@@ -140,7 +142,7 @@ def _draw_forces(ax: Axes, forces: list[_Force], scale: float | None, what: str,
     biggest = max((float(np.hypot(*f.vector)) for f in forces), default=0.0)
     shown = [f for f in forces if float(np.hypot(*f.vector)) > 1e-9 * max(biggest, 1e-12)]
     if scale is None:
-        scale = _nice(biggest / 100.0) if biggest > 0 else 1.0
+        scale = nice_scale(biggest / 100.0) if biggest > 0 else 1.0
     if not scale > 0:
         raise ValueError(f"scale must be positive, got {scale}")
     tail = np.zeros(2)
@@ -188,8 +190,15 @@ def _draw_forces(ax: Axes, forces: list[_Force], scale: float | None, what: str,
     ax.set_title(title + (f"\n{note}" if note else ""), fontsize=10)
 
 
-def _polygon_entries(plan: SolvePlan, solution: ForceSolution) -> list[tuple[str, set[str], str]]:
-    """(label, links, note) of each group in solve order, then of each driver."""
+def polygon_entries(plan: SolvePlan, solution: ForceSolution) -> list[tuple[str, set[str], str]]:
+    """The panels of the force polygons: each group in solve order, then each driver.
+
+    Returns
+    -------
+    list of (str, set of str, str)
+        ``(label, links, note)``: ``'II(2,3)'`` or ``'I(1)'``, the links whose
+        forces it sums, and a driver's balancing moment or force (else ``''``).
+    """
     entries = [(s.label, set(s.links), "") for s in plan.steps if s.group is not None]
     for d in plan.drivers:
         note = ""
@@ -260,11 +269,11 @@ def force_polygon(
     >>> ax.get_title().splitlines()
     ['Forces on driver 1, μ_F = 1 N/unit', 'balancing moment M_cb = 10 N·m']
     """
-    entries = _polygon_entries(plan, solution)
+    entries = polygon_entries(plan, solution)
     if group_label is not None:
         entries = [e for e in entries if e[0] == group_label]
         if not entries:
-            known = ", ".join(e[0] for e in _polygon_entries(plan, solution))
+            known = ", ".join(e[0] for e in polygon_entries(plan, solution))
             raise ValueError(f"no group or driver {group_label!r}: they are {known}")
     if ax is not None and len(entries) != 1:
         raise ValueError("drawing on given axes needs one group_label")
@@ -288,17 +297,17 @@ def force_polygon(
     return fig
 
 
-def _draw_loads(ax: Axes, plan: SolvePlan, state: KinematicState) -> None:
+def draw_loads(ax: Axes, plan: SolvePlan, state: KinematicState) -> None:
     """The applied forces on the mechanism: an arrow ending at each load's point (gid ``load:``)."""
     m = plan.mechanism
-    poses = _state_poses(state)
-    forces = [x for x in m.loads if x.kind == "force" and _xy(m, x.point) is not None]
+    poses = state_poses(state)
+    forces = [x for x in m.loads if x.kind == "force" and point_xy(m, x.point) is not None]
     biggest = max((float(np.hypot(*x.values)) for x in forces), default=0.0)
     if biggest <= 0:
         return
     reach = 0.25 * (plan.length or 1.0)
     for load in forces:
-        tip = _place(poses, load.link, _xy(m, load.point))
+        tip = place(poses, load.link, point_xy(m, load.point))
         tail = tip - np.asarray(load.values, dtype=float) / biggest * reach
         ax.annotate(
             "",

@@ -21,7 +21,7 @@ from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 from structure.model import Pair
 from structure.report import StructuralReport
 
-from .style import _OTHER_COLOUR, _axes, _palette, _virtual_links
+from .style import OTHER_COLOUR, figure_axes, palette, virtual_links
 
 __all__ = ["draw_graph"]
 
@@ -68,10 +68,10 @@ def draw_graph(report: StructuralReport, ax: Axes | None = None) -> Figure:
     -------
     Figure
     """
-    fig, ax = _axes(ax, (6.5, 5.5))
+    fig, ax = figure_axes(ax, (6.5, 5.5))
     m = report.mechanism
-    colour, handles = _palette(report)
-    virtual = _virtual_links(report)
+    colour, handles = palette(report)
+    virtual = virtual_links(report)
     drivers = set(report.drivers)
     edges = [(p, False) for p in m.pairs]
     edges += [(p, True) for r in report.replacements for p in r.new_pairs]
@@ -130,7 +130,7 @@ def draw_graph(report: StructuralReport, ax: Axes | None = None) -> Figure:
 
     for n in graph.nodes:
         x, y = (float(v) for v in pos[n])
-        c = colour.get(n, _OTHER_COLOUR)
+        c = colour.get(n, OTHER_COLOUR)
         ink = "white"
         if n == m.ground:
             patch = Rectangle(

@@ -39,15 +39,15 @@ from structure.report import StructuralReport
 from ..plan import SolvePlan
 from ..solve import KinematicState
 from .style import (
-    _DRIVER_COLOUR,
-    _OTHER_COLOUR,
+    DRIVER_COLOUR,
+    OTHER_COLOUR,
     Poses,
-    _axes,
-    _palette,
-    _place,
-    _state_poses,
-    _virtual_links,
-    _xy,
+    figure_axes,
+    palette,
+    place,
+    point_xy,
+    state_poses,
+    virtual_links,
 )
 
 __all__ = ["draw_mechanism"]
@@ -175,20 +175,20 @@ def _pitch_circles(mechanism, pair: Pair, contact: np.ndarray | None) -> list[_P
         pins = [
             q
             for q in mechanism.pairs_of(link)
-            if q.kind is PairKind.R and _xy(mechanism, q.point) is not None
+            if q.kind is PairKind.R and point_xy(mechanism, q.point) is not None
         ]
         if not pins:
             continue
         if known is not None and contact is not None:
             axis = min(
-                (_xy(mechanism, q.point) for q in pins),
+                (point_xy(mechanism, q.point) for q in pins),
                 key=lambda c: abs(float(np.hypot(*(c - contact))) - known),
             )
         elif link == mechanism.ground:
             continue  # which of the frame's pivots is the gear's axis is not known
         else:
             to_ground = [q for q in pins if q.other(link) == mechanism.ground]
-            axis = _xy(mechanism, (to_ground or pins)[0].point)
+            axis = point_xy(mechanism, (to_ground or pins)[0].point)
         radius = known
         if radius is None and contact is not None:
             radius = float(np.hypot(*(axis - contact)))
@@ -203,7 +203,7 @@ def _profiles(report: StructuralReport, size: float) -> list[_Profile]:
     out: list[_Profile] = []
     for r in report.replacements:
         p = r.pair
-        contact = _xy(m, p.point)
+        contact = point_xy(m, p.point)
         if p.gear:
             out.extend(_pitch_circles(m, p, contact))
             continue
@@ -211,7 +211,7 @@ def _profiles(report: StructuralReport, size: float) -> list[_Profile]:
             continue
         for link in (p.a, p.b):
             if r.roller is not None and link == r.roller.roller:
-                axis = _xy(m, r.roller.axis)
+                axis = point_xy(m, r.roller.axis)
                 if axis is not None:
                     radius = float(np.hypot(*(axis - contact)))
                     out.append(_Profile(p, link, r.roller.follower, "roller", axis, radius, 0.0))
@@ -221,7 +221,7 @@ def _profiles(report: StructuralReport, size: float) -> list[_Profile]:
                 if face is not None:
                     out.append(_Profile(p, link, link, "flat", contact, 0.0, face))
                 continue
-            centre = _xy(m, p.center_of(link))
+            centre = point_xy(m, p.center_of(link))
             if centre is None:
                 continue
             radius = float(np.hypot(*(centre - contact)))
@@ -244,15 +244,15 @@ def _draw_scene(
     """Draw the mechanism at ``poses`` on ``ax``; the scene moves it to other poses."""
     m = plan.mechanism
     ground = m.ground
-    colour, handles = _palette(report)
-    virtual = _virtual_links(report)
+    colour, handles = palette(report)
+    virtual = virtual_links(report)
     bodies = {link: _link_points(plan, link, virtual) for link in m.moving_links}
 
     sketch_span = [xy for pts in bodies.values() for xy in pts.values()]
     sketch_span += [xy for pair in m.pairs if (xy := _sketch(plan, pair.point)) is not None]
     if sketch_span:
         world = np.array(
-            [_place(poses, lk, xy) for lk, pts in bodies.items() for xy in pts.values()]
+            [place(poses, lk, xy) for lk, pts in bodies.items() for xy in pts.values()]
         )
         span = float(np.ptp(np.array(sketch_span), axis=0).max())
         if len(world):
@@ -269,7 +269,7 @@ def _draw_scene(
     offset = 0.02 * size
 
     def tint(link: str) -> str:
-        return colour.get(link, _DRIVER_COLOUR if link == ground else _OTHER_COLOUR)
+        return colour.get(link, DRIVER_COLOUR if link == ground else OTHER_COLOUR)
 
     # links: outline, filled body of a ternary link, label
     for link, pts in bodies.items():
@@ -302,7 +302,7 @@ def _draw_scene(
             )
             scene.follow(_mover_text(label, prof.carrier, prof.centre, prof.radius * 0.75), label)
     for r in report.replacements:
-        k = _xy(report.mechanism, r.pair.point)
+        k = point_xy(report.mechanism, r.pair.point)
         if k is None:
             continue
         # a gear mesh's contact stays at the pitch point as the gears roll
@@ -429,7 +429,7 @@ def _mover_text(text, link: str, xy: np.ndarray, nudge: float) -> Callable[[Pose
     """Move ``text`` to the point ``xy`` of ``link``, ``nudge`` up and right of it."""
 
     def move(poses: Poses) -> None:
-        w = _place(poses, link, xy) + nudge
+        w = place(poses, link, xy) + nudge
         text.set_position((float(w[0]), float(w[1])))
 
     return move
@@ -437,7 +437,7 @@ def _mover_text(text, link: str, xy: np.ndarray, nudge: float) -> Callable[[Pose
 
 def _mover_dot(line: Line2D, link: str, xy: np.ndarray) -> Callable[[Poses], None]:
     def move(poses: Poses) -> None:
-        w = _place(poses, link, xy)
+        w = place(poses, link, xy)
         line.set_data([w[0]], [w[1]])
 
     return move
@@ -445,7 +445,7 @@ def _mover_dot(line: Line2D, link: str, xy: np.ndarray) -> Callable[[Poses], Non
 
 def _mover_centre(patch, link: str, xy: np.ndarray) -> Callable[[Poses], None]:
     def move(poses: Poses) -> None:
-        patch.set_center(tuple(_place(poses, link, xy)))
+        patch.set_center(tuple(place(poses, link, xy)))
 
     return move
 
@@ -493,12 +493,12 @@ def _draw_link(
     centre = sketch.mean(axis=0)
 
     def move(poses: Poses) -> None:
-        w = _place(poses, link, sketch)
+        w = place(poses, link, sketch)
         if body is not None:
             body.set_xy(w)
         xy = np.vstack([w, w[:1]]) if ring else w
         line.set_data(xy[:, 0], xy[:, 1])
-        at = _place(poses, link, centre)
+        at = place(poses, link, centre)
         if len(w) == 2 and np.hypot(*(w[1] - w[0])) > 0:  # beside a bar, below or right of it
             d = (w[1] - w[0]) / np.hypot(*(w[1] - w[0]))
             side = np.array([d[1], -d[0]])
@@ -522,7 +522,7 @@ def _draw_profile(ax: Axes, scene: _Scene, prof: _Profile, c: str) -> None:
         ax.add_line(face)
 
         def move(poses: Poses) -> None:
-            w = _place(poses, prof.carrier, ends)
+            w = place(poses, prof.carrier, ends)
             face.set_data(w[:, 0], w[:, 1])
 
         scene.follow(move, face)
@@ -565,7 +565,7 @@ def _draw_profile(ax: Axes, scene: _Scene, prof: _Profile, c: str) -> None:
     ax.add_patch(patch)
 
     def move_curve(poses: Poses) -> None:
-        patch.set_center(tuple(_place(poses, prof.carrier, prof.centre)))
+        patch.set_center(tuple(place(poses, prof.carrier, prof.centre)))
         if isinstance(patch, Arc):
             patch.set_angle(math.degrees(_turn(poses, prof.carrier)))
 
@@ -621,11 +621,11 @@ def _draw_slider(
 
     def move(poses: Poses) -> None:
         theta = (pair.angle or 0.0) + _turn(poses, guide)
-        on_guide = _place(poses, guide, at)
+        on_guide = place(poses, guide, at)
         u = np.array([math.cos(theta), math.sin(theta)])
         ends = np.array([on_guide - half * u, on_guide + half * u])
         line.set_data(ends[:, 0], ends[:, 1])
-        box.set_xy(_rectangle(_place(poses, block, at), theta, 0.09 * size, 0.05 * size))
+        box.set_xy(_rectangle(place(poses, block, at), theta, 0.09 * size, 0.05 * size))
 
     scene.follow(move, line, box)
 
@@ -683,9 +683,9 @@ def _draw_driver(
     text = ax.text(0, 0, symbol, fontsize=10, ha="center", va="center", gid=f"driver:{d.link}")
 
     def move(poses: Poses) -> None:
-        w = _place(poses, d.link, sketch)
+        w = place(poses, d.link, sketch)
         arrow.set_positions(tuple(w[0]), tuple(w[1]))
-        t = _place(poses, d.link, note)
+        t = place(poses, d.link, note)
         text.set_position((float(t[0]), float(t[1])))
 
     scene.follow(move, arrow, text)
@@ -714,8 +714,8 @@ def draw_mechanism(
     -------
     Figure
     """
-    fig, ax = _axes(ax)
-    _, handles = _draw_scene(report, plan, ax, _state_poses(state))
+    fig, ax = figure_axes(ax)
+    _, handles = _draw_scene(report, plan, ax, state_poses(state))
     ax.legend(handles=handles, loc="best", fontsize=8)
     ax.relim()
     ax.set_aspect("equal", adjustable="datalim")

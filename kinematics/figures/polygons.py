@@ -29,7 +29,7 @@ from structure.model import PairKind
 from ..plan import SolvePlan
 from ..polygons import Term, point_motion, vector_equations
 from ..solve import KinematicState
-from .style import _axes, _nice
+from .style import figure_axes, nice_scale
 
 __all__ = ["acceleration_polygon", "velocity_polygon"]
 
@@ -156,7 +156,7 @@ def _polygon(
     colour: str,
     extra: _Construction | None = None,
 ) -> Figure:
-    fig, ax = _axes(ax, (6.0, 6.0))
+    fig, ax = figure_axes(ax, (6.0, 6.0))
     extra = extra or _Construction()
     vectors = {n: np.asarray(v, dtype=float) for n, v in vectors.items()}
     vectors.update({n: np.asarray(v, dtype=float) for n, v in extra.images.items()})
@@ -169,7 +169,7 @@ def _polygon(
         n: v for n, v in vectors.items() if float(np.linalg.norm(v)) > 1e-9 * max(absolute, 1e-12)
     }
     if scale is None:
-        scale = _nice(biggest / 100.0) if biggest > 0 else 1.0
+        scale = nice_scale(biggest / 100.0) if biggest > 0 else 1.0
     if not scale > 0:
         raise ValueError(f"scale must be positive, got {scale}")
     tips = {n: v / scale for n, v in shown.items()}

@@ -1,6 +1,6 @@
 """Animation of a mechanism over a sweep: a GIF (Pillow) or an MP4 (ffmpeg).
 
-The mechanism is drawn once (:func:`kinematics.figures.draw_mechanism`'s
+The mechanism is drawn once (:func:`kinematics.figures.scene.draw_scene`'s
 artists); each frame only moves those artists to the links' poses, so a
 frame costs one Agg render. The axes are fixed to the whole motion, and the
 paths of the moving points are traced faintly.
@@ -38,7 +38,7 @@ from structure.report import StructuralReport
 from ..plan import SolvePlan
 from ..solve import solve_poses
 from ..sweep import Sweep
-from .mechanism import _draw_scene
+from .scene import draw_scene
 
 __all__ = ["animate", "turn_inputs"]
 
@@ -169,7 +169,7 @@ def animate(
     fig = Figure(figsize=size, dpi=dpi)
     FigureCanvasAgg(fig)
     ax = fig.add_subplot()
-    scene, handles = _draw_scene(report, plan, ax, poses[0])
+    scene, handles = draw_scene(report, plan, ax, poses[0])
     hidden = []  # virtual links a rolling gear mesh does without away from the sketch
     for link, artists in scene.virtual.items():
         if link not in motion.q:

@@ -97,6 +97,7 @@ class _CanvasPillowWriter(PillowWriter):
 
 
 def _writer(path: Path, fps: float):
+    """The writer of ``path``'s format (a GIF blitted from the canvas, an MP4 by ffmpeg)."""
     suffix = path.suffix.lower()
     if suffix == ".gif":
         return _CanvasPillowWriter(fps=fps)

@@ -160,6 +160,7 @@ def _add_balancing(
 
 
 def _draw_forces(ax: Axes, forces: list[_Force], scale: float | None, what: str, note: str) -> None:
+    """The forces head to tail from the origin, to scale, their sizes below the axes."""
     biggest = max((float(np.hypot(*f.vector)) for f in forces), default=0.0)
     shown = [f for f in forces if float(np.hypot(*f.vector)) > 1e-9 * max(biggest, 1e-12)]
     if scale is None:

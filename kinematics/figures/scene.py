@@ -51,11 +51,13 @@ __all__ = ["Scene", "draw_scene"]
 
 
 def _turn(poses: Poses, link: str) -> float:
+    """The angle (rad) ``link`` has turned from the sketch (0 when not posed)."""
     q = poses.get(link)
     return 0.0 if q is None else float(q[2])
 
 
 def _sketch(plan: SolvePlan, name: str | None) -> np.ndarray | None:
+    """The sketch coordinates of point ``name``, or of the plan's point of that name."""
     if name is None:
         return None
     xy = plan.mechanism.coordinates(name)
@@ -108,11 +110,13 @@ def _slider_of(plan: SolvePlan, pair) -> tuple[str, str]:
 
 
 def _order(points: list[np.ndarray]) -> list[np.ndarray]:
+    """Points sorted by angle about their centroid (a ring's outline)."""
     centre = np.mean(points, axis=0)
     return sorted(points, key=lambda p: math.atan2(p[1] - centre[1], p[0] - centre[0]))
 
 
 def _rectangle(centre: np.ndarray, angle: float, length: float, width: float) -> np.ndarray:
+    """Corners of a ``length`` × ``width`` rectangle at ``centre`` turned by ``angle``."""
     u = np.array([math.cos(angle), math.sin(angle)])
     n = np.array([-u[1], u[0]])
     h, w = length / 2, width / 2
@@ -240,6 +244,7 @@ def _profiles(report: StructuralReport, size: float) -> list[_Profile]:
 
 
 def _contact_carrier(plan: SolvePlan, pair: Pair) -> str:
+    """The real link of a higher pair that carries its contact point."""
     links = plan.mechanism.links
     return pair.a if pair.a in links else pair.b
 
@@ -255,6 +260,7 @@ class _SceneStyle:
 
     @property
     def pin_radius(self) -> float:
+        """The radius of a pin's circle."""
         return 0.015 * self.size
 
     @property
@@ -546,6 +552,8 @@ def _mover_text(text, link: str, xy: np.ndarray, nudge: float) -> Callable[[Pose
 
 
 def _mover_dot(line: Line2D, link: str, xy: np.ndarray) -> Callable[[Poses], None]:
+    """Move the one-point ``line`` to the point ``xy`` of ``link``."""
+
     def move(poses: Poses) -> None:
         w = place(poses, link, xy)
         line.set_data([w[0]], [w[1]])
@@ -554,6 +562,8 @@ def _mover_dot(line: Line2D, link: str, xy: np.ndarray) -> Callable[[Poses], Non
 
 
 def _mover_centre(patch, link: str, xy: np.ndarray) -> Callable[[Poses], None]:
+    """Move the centre of ``patch`` to the point ``xy`` of ``link``."""
+
     def move(poses: Poses) -> None:
         patch.set_center(tuple(place(poses, link, xy)))
 
@@ -563,6 +573,7 @@ def _mover_centre(patch, link: str, xy: np.ndarray) -> Callable[[Poses], None]:
 def _draw_link(
     ax: Axes, scene: Scene, link: str, pts: list, c: str, virtual: bool, offset: float
 ) -> None:
+    """A link's outline (a ring from three points, filled unless virtual) and its label."""
     ring = len(pts) >= 3
     sketch = np.array(_order(pts) if ring else pts)
     body = None
@@ -623,6 +634,7 @@ def _draw_link(
 
 
 def _draw_profile(ax: Axes, scene: Scene, prof: _Profile, c: str) -> None:
+    """A higher pair's profile: a flat face, an arc, a pitch circle, a roller or cam circle."""
     gid = f"{'pitch' if prof.kind == 'pitch' else 'profile'}:{prof.pair.id}:{prof.link}"
     size = scene.size
     if prof.kind == "flat":

@@ -1,6 +1,6 @@
 """Animation of a mechanism over a sweep: a GIF (Pillow) or an MP4 (ffmpeg).
 
-The mechanism is drawn once (:func:`kinematics.figures.draw_mechanism`'s
+The mechanism is drawn once (:func:`kinematics.figures.scene.draw_scene`'s
 artists); each frame only moves those artists to the links' poses, so a
 frame costs one Agg render. The axes are fixed to the whole motion, and the
 paths of the moving points are traced faintly.
@@ -28,17 +28,20 @@ from pathlib import Path
 
 import numpy as np
 from matplotlib.animation import FFMpegWriter, PillowWriter
+from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.text import Text
 from PIL import Image
 
 from structure.errors import MechanismError
 from structure.report import StructuralReport
 
 from ..plan import SolvePlan
-from ..solve import solve_poses
+from ..solve import Motion, solve_poses
 from ..sweep import Sweep
-from .mechanism import _draw_scene
+from .scene import Scene, draw_scene
+from .style import Poses
 
 __all__ = ["animate", "turn_inputs"]
 
@@ -94,6 +97,7 @@ class _CanvasPillowWriter(PillowWriter):
 
 
 def _writer(path: Path, fps: float):
+    """The writer of ``path``'s format (a GIF blitted from the canvas, an MP4 by ffmpeg)."""
     suffix = path.suffix.lower()
     if suffix == ".gif":
         return _CanvasPillowWriter(fps=fps)
@@ -157,27 +161,104 @@ def animate(
     if not fps > 0:
         raise ValueError(f"fps must be positive, got {fps}")
     writer = _writer(path, fps)
+    inputs = _frame_inputs(source)
+    motion = solve_poses(plan, inputs)
+    poses = [{link: q[k] for link, q in motion.q.items()} for k in range(len(inputs))]
+
+    name = plan.mechanism.name or "mechanism"
+    fig, scene, title, moving = _first_frame(report, plan, motion, poses[0], name, size, dpi)
+    ax = title.axes
+    blit = isinstance(writer, _CanvasPillowWriter)
+    canvas = fig.canvas
+    background = _draw_still_parts(fig, moving) if blit else None
+    try:
+        with writer.saving(fig, str(path), dpi):
+            for pose, values in zip(poses, inputs, strict=True):
+                scene.update(pose)
+                title.set_text(_frame_title(name, plan, values))
+                if blit:
+                    canvas.restore_region(background)
+                    for artist in moving:
+                        ax.draw_artist(artist)
+                writer.grab_frame()
+    except FileNotFoundError as exc:
+        raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
+    return path
+
+
+def _first_frame(
+    report: StructuralReport,
+    plan: SolvePlan,
+    motion: Motion,
+    pose: Poses,
+    name: str,
+    size: tuple[float, float],
+    dpi: float,
+) -> tuple[Figure, Scene, Text, list]:
+    """The figure at the first pose, laid out once for every frame.
+
+    Returns the figure, its scene, its title, and the artists that move
+    (those of the scene still shown, and the title), in drawing order.
+    """
+    fig = Figure(figsize=size, dpi=dpi)
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot()
+    scene, handles = draw_scene(report, plan, ax, pose)
+    hidden = _hide_absent_virtual_links(scene, motion)
+    _fit_to_motion(ax, scene, plan, motion)
+    ax.legend(  # below the axes, where no link passes over it
+        handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=7
+    )
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    title = ax.set_title(name, fontsize=9)
+    fig.tight_layout()
+    fig.set_layout_engine(None)  # laid out once: no layout pass (and second draw) per frame
+    shown = [a for a in scene.artists if not any(a is h for h in hidden)]
+    moving = sorted([*shown, title], key=lambda a: a.get_zorder())
+    return fig, scene, title, moving
+
+
+def _frame_inputs(source: Sweep | np.ndarray) -> np.ndarray:
+    """The inputs (frames, drivers) of a sweep or of an array (a 1-D one: one driver).
+
+    Raises
+    ------
+    ValueError
+        No frames.
+    """
     inputs = np.asarray(source.inputs if isinstance(source, Sweep) else source, dtype=float)
     if inputs.ndim == 1:
         inputs = inputs[:, None]
     if len(inputs) == 0:
         raise ValueError("no frames to animate: the inputs are empty")
-    motion = solve_poses(plan, inputs)
-    frames = len(inputs)
-    poses = [{link: q[k] for link, q in motion.q.items()} for k in range(frames)]
+    return inputs
 
-    fig = Figure(figsize=size, dpi=dpi)
-    FigureCanvasAgg(fig)
-    ax = fig.add_subplot()
-    scene, handles = _draw_scene(report, plan, ax, poses[0])
-    hidden = []  # virtual links a rolling gear mesh does without away from the sketch
+
+def _draw_still_parts(fig: Figure, moving: list):
+    """Draw the figure without the ``moving`` artists, once; returns that background to blit on."""
+    for artist in moving:
+        artist.set_animated(True)
+    fig.canvas.draw()
+    return fig.canvas.copy_from_bbox(fig.bbox)
+
+
+def _hide_absent_virtual_links(scene: Scene, motion: Motion) -> list:
+    """Hide the virtual links a rolling gear mesh does without away from the sketch.
+
+    Returns the hidden artists.
+    """
+    hidden = []
     for link, artists in scene.virtual.items():
         if link not in motion.q:
             hidden.extend(artists)
             for artist in artists:
                 artist.set_visible(False)
+    return hidden
 
-    # fixed limits over the whole motion, and the paths of the moving points
+
+def _fit_to_motion(ax: Axes, scene: Scene, plan: SolvePlan, motion: Motion) -> None:
+    """Fix the limits to the whole motion, and trace the paths of the moving points faintly."""
     reach = []
     for link, sketch in scene.anchors:
         q = motion.q.get(link)
@@ -201,41 +282,12 @@ def animate(
     ax.set_ylim(lo[1] - pad, hi[1] + pad)
     ax.set_aspect("equal", adjustable="box")
     ax.set_autoscale_on(False)
-    ax.legend(  # below the axes, where no link passes over it
-        handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=7
-    )
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
-    name = plan.mechanism.name or "mechanism"
-    title = ax.set_title(name, fontsize=9)
-    symbols = [("φ" if d.kind == "R" else "s") + d.link for d in plan.drivers]
-    fig.tight_layout()
-    fig.set_layout_engine(None)  # laid out once: no layout pass (and second draw) per frame
-    blit = isinstance(writer, _CanvasPillowWriter)
-    shown = [a for a in scene.artists if not any(a is h for h in hidden)]
-    moving = sorted([*shown, title], key=lambda a: a.get_zorder())
-    canvas = fig.canvas
-    background = None
-    if blit:
-        for artist in moving:
-            artist.set_animated(True)
-        canvas.draw()  # the still parts, once
-        background = canvas.copy_from_bbox(fig.bbox)
 
-    try:
-        with writer.saving(fig, str(path), dpi):
-            for k in range(frames):
-                scene.update(poses[k])
-                state = ", ".join(
-                    f"{s} = {math.degrees(v):.0f}°" if d.kind == "R" else f"{s} = {v:.4g} m"
-                    for s, d, v in zip(symbols, plan.drivers, inputs[k], strict=True)
-                )
-                title.set_text(f"{name}\n{state}" if state else name)
-                if blit:
-                    canvas.restore_region(background)
-                    for artist in moving:
-                        ax.draw_artist(artist)
-                writer.grab_frame()
-    except FileNotFoundError as exc:
-        raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
-    return path
+
+def _frame_title(name: str, plan: SolvePlan, values: np.ndarray) -> str:
+    """The mechanism's name over the drivers' inputs: ``φ1 = 90°``, ``s1 = 0.02 m``."""
+    state = ", ".join(
+        f"φ{d.link} = {math.degrees(v):.0f}°" if d.kind == "R" else f"s{d.link} = {v:.4g} m"
+        for d, v in zip(plan.drivers, values, strict=True)
+    )
+    return f"{name}\n{state}" if state else name

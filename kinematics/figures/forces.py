@@ -4,8 +4,10 @@
 it drawn head to tail, a closed polygon: ``Annotation`` arrows with gid
 ``force:<key>`` (``load:<link>:<point>``, ``weight:<link>``,
 ``inertia:<link>``, ``reaction:<from>-><on>:<point>``, ``balance:<link>``),
-the scale ``μ_F = 10 N/unit`` in the title; :func:`kinematics.figures.forces_sheet`
-also draws the applied forces on the mechanism (gid ``load:<link>:<point>``).
+the scale ``μ_F = 10 N/unit`` in the title; :func:`draw_loads` draws the
+applied forces on the mechanism (gid ``load:<link>:<point>``) and
+:func:`polygon_entries` lists the panels, for
+:func:`kinematics.figures.sheets.forces_sheet`.
 """
 
 from __future__ import annotations
@@ -21,9 +23,9 @@ from matplotlib.figure import Figure
 from ..forces import ForceSolution
 from ..plan import SolvePlan
 from ..solve import KinematicState, solve_pose
-from .style import _nice, _place, _state_poses, _xy
+from .style import nice_scale, place, point_xy, state_poses
 
-__all__ = ["force_polygon"]
+__all__ = ["draw_loads", "force_polygon", "polygon_entries"]
 
 
 @dataclass(frozen=True)
@@ -63,18 +65,33 @@ def _forces_on(
     virtual link's pairs, so its own entry is skipped; the labels name the
     real links in contact.
     """
-    m = plan.mechanism
     out: list[_Force] = []
-    keys: set[str] = set()
+    _add_loads(out, plan, links, state)
+    _add_reactions(out, plan, solution, links)
+    if with_balance:
+        _add_balancing(out, plan, solution, links)
+    total = sum((f.vector for f in out), np.zeros(2))
+    biggest = max((float(np.hypot(*f.vector)) for f in out), default=0.0)
+    if float(np.hypot(*total)) > 1e-7 * max(biggest, 1e-12):
+        _add(out, "rest", "rest (friction)", -total, "rest")
+    return out
 
-    def add(key: str, label: str, vector, kind: str) -> None:
-        base, k = key, 1
-        while key in keys:
-            k += 1
-            key = f"{base}#{k}"
-        keys.add(key)
-        out.append(_Force(key, label, np.asarray(vector, dtype=float), kind))
 
+def _add(out: list[_Force], key: str, label: str, vector, kind: str) -> None:
+    """Append a force to ``out``, its key made unique (``key#2``, ``key#3``, ...)."""
+    keys = {f.key for f in out}
+    base, k = key, 1
+    while key in keys:
+        k += 1
+        key = f"{base}#{k}"
+    out.append(_Force(key, label, np.asarray(vector, dtype=float), kind))
+
+
+def _add_loads(
+    out: list[_Force], plan: SolvePlan, links: set[str], state: KinematicState | None
+) -> None:
+    """The applied forces, weights and inertia forces (at ``state``, else the sketch's pose)."""
+    m = plan.mechanism
     gravity = np.zeros(2)
     for load in m.loads:
         if load.kind == "gravity":
@@ -83,23 +100,28 @@ def _forces_on(
         if load.link not in links:
             continue
         if load.kind == "force":
-            add(f"load:{load.link}:{load.point}", f"P{load.link}", load.values, "load")
+            _add(out, f"load:{load.link}:{load.point}", f"P{load.link}", load.values, "load")
         elif load.kind == "mass":
             mass = load.values[0]
             if np.any(gravity):
-                add(f"weight:{load.link}", f"G{load.link}", mass * gravity, "weight")
+                _add(out, f"weight:{load.link}", f"G{load.link}", mass * gravity, "weight")
             if state is None:
                 state = solve_pose(plan)
             ls = state.links.get(load.link)
-            c = _xy(m, load.point)
+            c = point_xy(m, load.point)
             if ls is None or c is None:
                 continue
             theta, omega, eps = float(ls.q[2]), float(ls.qd[2]), float(ls.qdd[2])
-            rc = _place({load.link: np.array([0.0, 0.0, theta])}, load.link, c)
+            rc = place({load.link: np.array([0.0, 0.0, theta])}, load.link, c)
             a_s = np.asarray(ls.qdd[:2], dtype=float) + eps * np.array([-rc[1], rc[0]])
             a_s = a_s - omega**2 * rc
-            add(f"inertia:{load.link}", f"Φ{load.link}", -mass * a_s, "inertia")
+            _add(out, f"inertia:{load.link}", f"Φ{load.link}", -mass * a_s, "inertia")
 
+
+def _add_reactions(
+    out: list[_Force], plan: SolvePlan, solution: ForceSolution, links: set[str]
+) -> None:
+    """What the links outside ``links`` exert on it, labelled by the real links in contact."""
     contact = {v: (a, b) for v, a, b, _ in plan.contacts}
 
     def real(name: str, partner: str) -> str:
@@ -119,28 +141,30 @@ def _forces_on(
         else:
             source, target, force = b, a, -np.asarray(r.force, dtype=float)
         label = _pair_label(real(source, target), real(target, source))
-        add(f"reaction:{source}->{target}:{r.point}", label, force, "reaction")
-    if with_balance and solution.balancing_force is not None:
+        _add(out, f"reaction:{source}->{target}:{r.point}", label, force, "reaction")
+
+
+def _add_balancing(
+    out: list[_Force], plan: SolvePlan, solution: ForceSolution, links: set[str]
+) -> None:
+    """The balancing force on ``links``: a ``balance`` load's, or along a sliding driver."""
+    m = plan.mechanism
+    if solution.balancing_force is not None:
         balance = next((x for x in m.loads if x.kind == "balance"), None)
         if balance is not None and balance.link in links:
-            add(f"balance:{balance.link}", "P_cb", solution.balancing_force, "balance")
-    if with_balance:  # a sliding driver's balancing "moment" is a force along its slide
-        for d in plan.drivers:
-            if d.kind == "P" and d.link in links and d.link in solution.balancing_moment:
-                push = solution.balancing_moment[d.link] * np.asarray(d.direction, dtype=float)
-                add(f"balance:{d.link}", "P_cb", push, "balance")
-    total = sum((f.vector for f in out), np.zeros(2))
-    biggest = max((float(np.hypot(*f.vector)) for f in out), default=0.0)
-    if float(np.hypot(*total)) > 1e-7 * max(biggest, 1e-12):
-        add("rest", "rest (friction)", -total, "rest")
-    return out
+            _add(out, f"balance:{balance.link}", "P_cb", solution.balancing_force, "balance")
+    for d in plan.drivers:  # a sliding driver's balancing "moment" is a force along its slide
+        if d.kind == "P" and d.link in links and d.link in solution.balancing_moment:
+            push = solution.balancing_moment[d.link] * np.asarray(d.direction, dtype=float)
+            _add(out, f"balance:{d.link}", "P_cb", push, "balance")
 
 
 def _draw_forces(ax: Axes, forces: list[_Force], scale: float | None, what: str, note: str) -> None:
+    """The forces head to tail from the origin, to scale, their sizes below the axes."""
     biggest = max((float(np.hypot(*f.vector)) for f in forces), default=0.0)
     shown = [f for f in forces if float(np.hypot(*f.vector)) > 1e-9 * max(biggest, 1e-12)]
     if scale is None:
-        scale = _nice(biggest / 100.0) if biggest > 0 else 1.0
+        scale = nice_scale(biggest / 100.0) if biggest > 0 else 1.0
     if not scale > 0:
         raise ValueError(f"scale must be positive, got {scale}")
     tail = np.zeros(2)
@@ -188,8 +212,15 @@ def _draw_forces(ax: Axes, forces: list[_Force], scale: float | None, what: str,
     ax.set_title(title + (f"\n{note}" if note else ""), fontsize=10)
 
 
-def _polygon_entries(plan: SolvePlan, solution: ForceSolution) -> list[tuple[str, set[str], str]]:
-    """(label, links, note) of each group in solve order, then of each driver."""
+def polygon_entries(plan: SolvePlan, solution: ForceSolution) -> list[tuple[str, set[str], str]]:
+    """The panels of the force polygons: each group in solve order, then each driver.
+
+    Returns
+    -------
+    list of (str, set of str, str)
+        ``(label, links, note)``: ``'II(2,3)'`` or ``'I(1)'``, the links whose
+        forces it sums, and a driver's balancing moment or force (else ``''``).
+    """
     entries = [(s.label, set(s.links), "") for s in plan.steps if s.group is not None]
     for d in plan.drivers:
         note = ""
@@ -260,24 +291,10 @@ def force_polygon(
     >>> ax.get_title().splitlines()
     ['Forces on driver 1, μ_F = 1 N/unit', 'balancing moment M_cb = 10 N·m']
     """
-    entries = _polygon_entries(plan, solution)
-    if group_label is not None:
-        entries = [e for e in entries if e[0] == group_label]
-        if not entries:
-            known = ", ".join(e[0] for e in _polygon_entries(plan, solution))
-            raise ValueError(f"no group or driver {group_label!r}: they are {known}")
+    entries = _chosen_entries(plan, solution, group_label)
     if ax is not None and len(entries) != 1:
         raise ValueError("drawing on given axes needs one group_label")
-    if ax is not None:
-        fig, axes = ax.figure, [ax]
-    else:
-        cols = min(len(entries), 3)
-        rows = math.ceil(len(entries) / cols)
-        fig = Figure(figsize=(6.2 * cols, 5.0 * rows))
-        FigureCanvasAgg(fig)
-        axes = list(np.atleast_1d(fig.subplots(rows, cols)).ravel())
-        for extra in axes[len(entries) :]:
-            fig.delaxes(extra)
+    fig, axes = (ax.figure, [ax]) if ax is not None else _grid(len(entries))
     for (label, links, note), target in zip(entries, axes, strict=False):
         is_driver = label.startswith("I(")
         forces = _forces_on(plan, solution, links, state, with_balance=is_driver)
@@ -288,17 +305,43 @@ def force_polygon(
     return fig
 
 
-def _draw_loads(ax: Axes, plan: SolvePlan, state: KinematicState) -> None:
+def _chosen_entries(
+    plan: SolvePlan, solution: ForceSolution, group_label: str | None
+) -> list[tuple[str, set[str], str]]:
+    """The panel of ``group_label``, or every panel (:func:`polygon_entries`)."""
+    entries = polygon_entries(plan, solution)
+    if group_label is None:
+        return entries
+    chosen = [e for e in entries if e[0] == group_label]
+    if not chosen:
+        known = ", ".join(e[0] for e in entries)
+        raise ValueError(f"no group or driver {group_label!r}: they are {known}")
+    return chosen
+
+
+def _grid(count: int) -> tuple[Figure, list[Axes]]:
+    """A new figure with ``count`` axes, at most three to a row."""
+    cols = min(count, 3)
+    rows = math.ceil(count / cols)
+    fig = Figure(figsize=(6.2 * cols, 5.0 * rows))
+    FigureCanvasAgg(fig)
+    axes = list(np.atleast_1d(fig.subplots(rows, cols)).ravel())
+    for extra in axes[count:]:
+        fig.delaxes(extra)
+    return fig, axes
+
+
+def draw_loads(ax: Axes, plan: SolvePlan, state: KinematicState) -> None:
     """The applied forces on the mechanism: an arrow ending at each load's point (gid ``load:``)."""
     m = plan.mechanism
-    poses = _state_poses(state)
-    forces = [x for x in m.loads if x.kind == "force" and _xy(m, x.point) is not None]
+    poses = state_poses(state)
+    forces = [x for x in m.loads if x.kind == "force" and point_xy(m, x.point) is not None]
     biggest = max((float(np.hypot(*x.values)) for x in forces), default=0.0)
     if biggest <= 0:
         return
     reach = 0.25 * (plan.length or 1.0)
     for load in forces:
-        tip = _place(poses, load.link, _xy(m, load.point))
+        tip = place(poses, load.link, point_xy(m, load.point))
         tail = tip - np.asarray(load.values, dtype=float) / biggest * reach
         ax.annotate(
             "",

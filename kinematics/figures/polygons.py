@@ -29,7 +29,7 @@ from structure.model import PairKind
 from ..plan import SolvePlan
 from ..polygons import Term, point_motion, vector_equations
 from ..solve import KinematicState
-from .style import _axes, _nice
+from .style import figure_axes, nice_scale
 
 __all__ = ["acceleration_polygon", "velocity_polygon"]
 
@@ -156,7 +156,8 @@ def _polygon(
     colour: str,
     extra: _Construction | None = None,
 ) -> Figure:
-    fig, ax = _axes(ax, (6.0, 6.0))
+    """The polygon of ``vectors`` from ``pole`` and the construction ``extra``, to scale."""
+    fig, ax = figure_axes(ax, (6.0, 6.0))
     extra = extra or _Construction()
     vectors = {n: np.asarray(v, dtype=float) for n, v in vectors.items()}
     vectors.update({n: np.asarray(v, dtype=float) for n, v in extra.images.items()})
@@ -169,13 +170,38 @@ def _polygon(
         n: v for n, v in vectors.items() if float(np.linalg.norm(v)) > 1e-9 * max(absolute, 1e-12)
     }
     if scale is None:
-        scale = _nice(biggest / 100.0) if biggest > 0 else 1.0
+        scale = nice_scale(biggest / 100.0) if biggest > 0 else 1.0
     if not scale > 0:
         raise ValueError(f"scale must be positive, got {scale}")
     tips = {n: v / scale for n, v in shown.items()}
     extent = max((float(np.abs(v).max()) for v in corners_phys), default=0.0) / scale or 1.0
     nudge = 0.03 * extent
 
+    _draw_pole_vectors(ax, tips, derived, pole, colour, nudge, extent)
+    corners = [np.zeros(2), *tips.values()]
+    corners += _draw_components(ax, extra, scale, absolute, nudge)
+    for link, images in extra.links:
+        xy = np.array(images) / scale
+        if len(xy) > 2:
+            xy = np.vstack([xy, xy[:1]])
+        ax.plot(xy[:, 0], xy[:, 1], ls=":", color="0.5", lw=1.0, zorder=1, gid=f"image:{link}")
+    if extra.components:
+        _component_legend(ax, extra, pole, colour)
+    _fit_to_corners(ax, np.array(corners), extent)
+    ax.set_title(f"{what}, {symbol} = {scale:.6g} {unit}/unit")
+    return fig
+
+
+def _draw_pole_vectors(
+    ax: Axes,
+    tips: Mapping[str, np.ndarray],
+    derived: set[str],
+    pole: str,
+    colour: str,
+    nudge: float,
+    extent: float,
+) -> None:
+    """The pole, and each point's arrow from it with its lower-case label (thin when derived)."""
     ax.plot([0.0], [0.0], "o", color="black", ms=4, gid="pole")
     ax.text(-nudge, -nudge, pole, fontsize=11, ha="right", va="top", gid="label:pole")
     placed: list[np.ndarray] = []
@@ -207,30 +233,27 @@ def _polygon(
             gid=f"label:{name}",
         )
 
-    corners = [np.zeros(2), *tips.values()]
-    corners += _draw_components(ax, extra, scale, absolute, nudge)
-    for link, images in extra.links:
-        xy = np.array(images) / scale
-        if len(xy) > 2:
-            xy = np.vstack([xy, xy[:1]])
-        ax.plot(xy[:, 0], xy[:, 1], ls=":", color="0.5", lw=1.0, zorder=1, gid=f"image:{link}")
-    if extra.components:
-        handles = [Line2D([], [], color=colour, lw=2.2, alpha=0.75, label=f"absolute, from {pole}")]
-        kinds = dict.fromkeys(c.sup for c in extra.components)
-        for sup in kinds:
-            c, entry = _COMPONENT_STYLE[sup]
-            handles.append(Line2D([], [], color=c, lw=1.2, label=entry))
-        ax.legend(
-            handles=handles,
-            loc="upper center",
-            bbox_to_anchor=(0.5, -0.05),
-            ncol=2,
-            fontsize=7,
-            frameon=False,
-        )
 
-    corners_arr = np.array(corners)
-    lo, hi = corners_arr.min(axis=0), corners_arr.max(axis=0)
+def _component_legend(ax: Axes, extra: _Construction, pole: str, colour: str) -> None:
+    """Below the axes: the absolute vectors, then each kind of component drawn."""
+    handles = [Line2D([], [], color=colour, lw=2.2, alpha=0.75, label=f"absolute, from {pole}")]
+    kinds = dict.fromkeys(c.sup for c in extra.components)
+    for sup in kinds:
+        c, entry = _COMPONENT_STYLE[sup]
+        handles.append(Line2D([], [], color=c, lw=1.2, label=entry))
+    ax.legend(
+        handles=handles,
+        loc="upper center",
+        bbox_to_anchor=(0.5, -0.05),
+        ncol=2,
+        fontsize=7,
+        frameon=False,
+    )
+
+
+def _fit_to_corners(ax: Axes, corners: np.ndarray, extent: float) -> None:
+    """Equal-scale limits around ``corners`` (padded, not a sliver) and the axes through 0."""
+    lo, hi = corners.min(axis=0), corners.max(axis=0)
     pad = 0.12 * max(float((hi - lo).max()), extent)
     lo, hi = lo - pad, hi + pad
     span = hi - lo
@@ -241,8 +264,6 @@ def _polygon(
     ax.set_aspect("equal", adjustable="box")
     ax.axhline(0.0, color="0.85", lw=0.6, zorder=0)
     ax.axvline(0.0, color="0.85", lw=0.6, zorder=0)
-    ax.set_title(f"{what}, {symbol} = {scale:.6g} {unit}/unit")
-    return fig
 
 
 def _draw_components(

@@ -5,17 +5,19 @@ Everything is drawn on a :class:`matplotlib.figure.Figure` with the Agg canvas
 can be read back by their gids; each drawing lives in the module named after
 it, which states its gids, and is re-exported here:
 
-* :mod:`kinematics.mechanism_figure` — :func:`draw_mechanism`;
-* :mod:`kinematics.graph_figure` — :func:`draw_graph`;
-* :mod:`kinematics.polygon_figures` — :func:`velocity_polygon`,
+* :mod:`kinematics.figures.mechanism` — :func:`draw_mechanism` (its
+  artists drawn by :mod:`kinematics.figures.scene`);
+* :mod:`kinematics.figures.graph` — :func:`draw_graph`;
+* :mod:`kinematics.figures.polygons` — :func:`velocity_polygon`,
   :func:`acceleration_polygon`;
-* :mod:`kinematics.force_figures` — :func:`force_polygon`;
-* :mod:`kinematics.sweep_figure` — :func:`sweep_figure`;
-* :mod:`kinematics.figure_style` — the colours, axes and scales they share.
+* :mod:`kinematics.figures.forces` — :func:`force_polygon`;
+* :mod:`kinematics.figures.sweep` — :func:`sweep_figure`;
+* :mod:`kinematics.figures.style` — the colours, axes and scales they share.
 
 This module puts them together on sheets (:func:`kinematics_sheet`,
 :func:`structure_sheet`, :func:`forces_sheet`) and saves a figure
-(:func:`save`).
+(:func:`save`). The animation of a motion is
+:func:`kinematics.figures.animation.animate`, imported from its module.
 
 >>> from structure import parse_edgelist
 >>> from structure.report import analyze
@@ -50,7 +52,7 @@ from structure.report import StructuralReport
 from ..forces import ForceSolution
 from ..plan import SolvePlan
 from ..solve import KinematicState, solve_pose
-from .forces import _draw_loads, _polygon_entries, force_polygon
+from .forces import draw_loads, force_polygon, polygon_entries
 from .graph import draw_graph
 from .mechanism import draw_mechanism
 from .polygons import acceleration_polygon, velocity_polygon
@@ -151,7 +153,7 @@ def forces_sheet(
     Figure
     """
     state = solve_pose(plan) if state is None else state
-    entries = _polygon_entries(plan, solution)
+    entries = polygon_entries(plan, solution)
     panels = 1 + len(entries)
     cols = min(panels, 3)
     rows = math.ceil(panels / cols)
@@ -161,7 +163,7 @@ def forces_sheet(
     for extra in axes[panels:]:
         fig.delaxes(extra)
     draw_mechanism(report, plan, state, ax=axes[0])
-    _draw_loads(axes[0], plan, state)
+    draw_loads(axes[0], plan, state)
     for (label, _, _), ax in zip(entries, axes[1:], strict=False):
         force_polygon(plan, solution, label, ax=ax, state=state)
     fig.tight_layout()

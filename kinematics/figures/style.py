@@ -1,12 +1,17 @@
 """Shared style of the figures: group colours and legend, new axes, placing points, round scales.
 
-The private helpers the figure modules (:mod:`kinematics.mechanism_figure`,
-:mod:`kinematics.graph_figure`, :mod:`kinematics.polygon_figures`,
-:mod:`kinematics.force_figures`, :mod:`kinematics.sweep_figure`) share: each
-Assur group's colour (drivers black, other links grey) and the legend entries
-(``"II(2,3) RRR, order 2"``, ``"driver 1"``, a dashed ``"virtual link"``), a
-new Agg figure's axes, a link's sketch point placed at a pose, and the round
-scale (1, 2, 2.5, 5 × 10ᵏ) of a polygon.
+What the figure modules (:mod:`kinematics.figures.scene`,
+:mod:`kinematics.figures.mechanism`, :mod:`kinematics.figures.graph`,
+:mod:`kinematics.figures.polygons`, :mod:`kinematics.figures.forces`) share:
+each Assur group's colour (drivers black, other links grey) and the legend
+entries (``"II(2,3) RRR, order 2"``, ``"driver 1"``, a dashed ``"virtual
+link"``), a new Agg figure's axes, a link's sketch point placed at a pose,
+and the round scale (1, 2, 2.5, 5 × 10ᵏ) of a polygon.
+
+>>> nice_scale(0.3)
+0.5
+>>> place({"1": np.array([1.0, 0.0, math.pi / 2])}, "1", [1.0, 0.0]).round(12).tolist()
+[1.0, 1.0]
 """
 
 from __future__ import annotations
@@ -24,7 +29,18 @@ from structure.report import StructuralReport
 
 from ..solve import KinematicState
 
-__all__: list[str] = []  # private helpers of the figure modules
+__all__ = [
+    "DRIVER_COLOUR",
+    "OTHER_COLOUR",
+    "Poses",
+    "figure_axes",
+    "nice_scale",
+    "palette",
+    "place",
+    "point_xy",
+    "state_poses",
+    "virtual_links",
+]
 
 
 _GROUP_COLOURS = (
@@ -38,14 +54,18 @@ _GROUP_COLOURS = (
     "tab:olive",
     "tab:cyan",
 )
-_DRIVER_COLOUR = "black"
-_OTHER_COLOUR = "0.55"
+DRIVER_COLOUR = "black"
+"""The colour of the drivers (and of the ground)."""
+OTHER_COLOUR = "0.55"
+"""The colour of a link in no group (a virtual link's guide, an idle link)."""
 _VIRTUAL_ENTRY = "virtual link (replaces a higher pair)"
 
 Poses = Mapping[str, np.ndarray]
+"""Each link's pose ``{link: (x, y, θ)}`` (m, m, rad); a link not in it stays at the sketch."""
 
 
-def _axes(ax: Axes | None, size: tuple[float, float] = (7.0, 6.0)) -> tuple[Figure, Axes]:
+def figure_axes(ax: Axes | None, size: tuple[float, float] = (7.0, 6.0)) -> tuple[Figure, Axes]:
+    """``ax`` and its figure, or a new Agg figure of ``size`` (inches) with one axes."""
     if ax is not None:
         return ax.figure, ax
     fig = Figure(figsize=size)
@@ -53,7 +73,7 @@ def _axes(ax: Axes | None, size: tuple[float, float] = (7.0, 6.0)) -> tuple[Figu
     return fig, fig.add_subplot()
 
 
-def _place(poses: Poses, link: str, c) -> np.ndarray:
+def place(poses: Poses, link: str, c) -> np.ndarray:
     """World position of sketch point(s) ``c`` ((2,) or (k, 2)) carried by ``link``."""
     c = np.asarray(c, dtype=float)
     q = poses.get(link)
@@ -63,16 +83,19 @@ def _place(poses: Poses, link: str, c) -> np.ndarray:
     return np.asarray(q[:2], dtype=float) + c @ np.array([[cos, sin], [-sin, cos]])
 
 
-def _state_poses(state: KinematicState) -> dict[str, np.ndarray]:
+def state_poses(state: KinematicState) -> dict[str, np.ndarray]:
+    """Each link's pose ``(x, y, θ)`` in a solved state."""
     return {name: np.asarray(ls.q, dtype=float) for name, ls in state.links.items()}
 
 
-def _xy(mechanism, name: str | None) -> np.ndarray | None:
+def point_xy(mechanism, name: str | None) -> np.ndarray | None:
+    """The sketch coordinates of point ``name`` of ``mechanism`` (None: no name or no point)."""
     xy = mechanism.coordinates(name) if name else None
     return None if xy is None else np.asarray(xy, dtype=float)
 
 
-def _virtual_links(report: StructuralReport) -> set[str]:
+def virtual_links(report: StructuralReport) -> set[str]:
+    """The links that replace higher pairs (drawn dashed)."""
     return {r.virtual_link for r in report.replacements}
 
 
@@ -81,7 +104,7 @@ def _group_entry(group) -> str:
     return f"{group.label}{kind}, order {group.order}"
 
 
-def _palette(report: StructuralReport) -> tuple[dict[str, str], list[Line2D]]:
+def palette(report: StructuralReport) -> tuple[dict[str, str], list[Line2D]]:
     """Each link's colour (its group's, drivers black) and the legend handles."""
     colour: dict[str, str] = {}
     handles: list[Line2D] = []
@@ -91,14 +114,14 @@ def _palette(report: StructuralReport) -> tuple[dict[str, str], list[Line2D]]:
             colour[link] = c
         handles.append(Line2D([], [], color=c, lw=3, label=_group_entry(group)))
     for link in report.drivers:
-        colour[link] = _DRIVER_COLOUR
-        handles.append(Line2D([], [], color=_DRIVER_COLOUR, lw=3, label=f"driver {link}"))
+        colour[link] = DRIVER_COLOUR
+        handles.append(Line2D([], [], color=DRIVER_COLOUR, lw=3, label=f"driver {link}"))
     if report.replacements:
-        handles.append(Line2D([], [], color=_OTHER_COLOUR, lw=1.5, ls="--", label=_VIRTUAL_ENTRY))
+        handles.append(Line2D([], [], color=OTHER_COLOUR, lw=1.5, ls="--", label=_VIRTUAL_ENTRY))
     return colour, handles
 
 
-def _nice(value: float) -> float:
+def nice_scale(value: float) -> float:
     """The smallest of 1, 2, 2.5, 5 × 10ᵏ not below ``value``."""
     if value <= 0 or not math.isfinite(value):
         return 1.0

@@ -9,6 +9,7 @@ angle and balancing moment against the input, each a ``Line2D`` with gid
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
@@ -68,61 +69,14 @@ def sweep_figure(result: Sweep, plan: SolvePlan | None = None) -> Figure:
     for extra in axes[panels:]:
         fig.delaxes(extra)
     paths, omega, epsilon, speed, accel, trans = axes[:6]
-
-    positions = {n: np.asarray(v["position"], dtype=float) for n, v in result.points.items()}
-    reach = np.array([p for v in positions.values() for p in v]) if positions else np.zeros((1, 2))
-    size = float(np.ptp(reach, axis=0).max()) or 1.0
-    moving = [n for n, p in positions.items() if float(np.ptp(p, axis=0).max()) > 1e-9 * size]
-    for name in moving:
-        p = positions[name]
-        paths.plot(p[:, 0], p[:, 1], lw=1.3, label=name, gid=f"path:{name}")
-    for name, p in positions.items():
-        if name not in moving:
-            paths.plot(p[:1, 0], p[:1, 1], "k^", ms=5, gid=f"fixed:{name}")
-            paths.annotate(name, (float(p[0, 0]), float(p[0, 1])), fontsize=7)
-    paths.set_aspect("equal", adjustable="datalim")
-    paths.set_title("Paths of the points (coupler curves)", fontsize=10)
-    paths.set_xlabel("x (m)")
-    paths.set_ylabel("y (m)")
-
-    for name, values in result.links.items():
-        omega.plot(x, values["omega"], lw=1.3, label=name, gid=f"omega:{name}")
-        epsilon.plot(x, values["epsilon"], lw=1.3, label=name, gid=f"epsilon:{name}")
-    omega.set_title("Angular velocity ω", fontsize=10)
-    omega.set_ylabel("ω (rad/s)")
-    epsilon.set_title("Angular acceleration ε", fontsize=10)
-    epsilon.set_ylabel("ε (rad/s²)")
-    for name in moving:
-        v = np.asarray(result.points[name]["velocity"], dtype=float)
-        a = np.asarray(result.points[name]["acceleration"], dtype=float)
-        speed.plot(x, np.hypot(v[:, 0], v[:, 1]), lw=1.3, label=name, gid=f"speed:{name}")
-        accel.plot(x, np.hypot(a[:, 0], a[:, 1]), lw=1.3, label=name, gid=f"accel:{name}")
-    speed.set_title("Speed |v| of the points", fontsize=10)
-    speed.set_ylabel("|v| (m/s)")
-    accel.set_title("Acceleration |a| of the points", fontsize=10)
-    accel.set_ylabel("|a| (m/s²)")
-    for label, mu in result.transmission.items():
-        trans.plot(x, np.degrees(mu), lw=1.3, label=label, gid=f"transmission:{label}")
-    if not result.transmission:
-        trans.text(
-            0.5,
-            0.5,
-            "no dyad with a transmission angle",
-            ha="center",
-            va="center",
-            transform=trans.transAxes,
-            fontsize=9,
-        )
-    trans.set_title("Transmission angle μ", fontsize=10)
-    trans.set_ylabel("μ (°)")
+    moving = _draw_paths(paths, result)
+    _draw_link_rates(omega, epsilon, x, result)
+    _draw_point_rates(speed, accel, x, result, moving)
+    _draw_transmission(trans, x, result)
     chosen = [omega, epsilon, speed, accel, trans]
     if result.balancing:
-        bal = axes[6]
-        for name, values in result.balancing.items():
-            bal.plot(x, values, lw=1.3, label=name, gid=f"balancing:{name}")
-        bal.set_title("Balancing moment (force)", fontsize=10)
-        bal.set_ylabel("M_cb (N·m) or P_cb (N)")
-        chosen.append(bal)
+        _draw_balancing(axes[6], x, result)
+        chosen.append(axes[6])
     for ax in chosen:
         ax.set_xlabel(xlabel, fontsize=8)
         ax.grid(True, lw=0.4, alpha=0.6)
@@ -132,3 +86,75 @@ def sweep_figure(result: Sweep, plan: SolvePlan | None = None) -> Figure:
         paths.legend(fontsize=7, ncol=2 if len(moving) > 6 else 1)
     fig.tight_layout()
     return fig
+
+
+def _draw_paths(ax: Axes, result: Sweep) -> list[str]:
+    """Each moving point's path in the plane, each fixed point a triangle; the moving points."""
+    positions = {n: np.asarray(v["position"], dtype=float) for n, v in result.points.items()}
+    reach = np.array([p for v in positions.values() for p in v]) if positions else np.zeros((1, 2))
+    size = float(np.ptp(reach, axis=0).max()) or 1.0
+    moving = [n for n, p in positions.items() if float(np.ptp(p, axis=0).max()) > 1e-9 * size]
+    for name in moving:
+        p = positions[name]
+        ax.plot(p[:, 0], p[:, 1], lw=1.3, label=name, gid=f"path:{name}")
+    for name, p in positions.items():
+        if name not in moving:
+            ax.plot(p[:1, 0], p[:1, 1], "k^", ms=5, gid=f"fixed:{name}")
+            ax.annotate(name, (float(p[0, 0]), float(p[0, 1])), fontsize=7)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_title("Paths of the points (coupler curves)", fontsize=10)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    return moving
+
+
+def _draw_link_rates(omega: Axes, epsilon: Axes, x: np.ndarray, result: Sweep) -> None:
+    """Each link's ω and ε against the input."""
+    for name, values in result.links.items():
+        omega.plot(x, values["omega"], lw=1.3, label=name, gid=f"omega:{name}")
+        epsilon.plot(x, values["epsilon"], lw=1.3, label=name, gid=f"epsilon:{name}")
+    omega.set_title("Angular velocity ω", fontsize=10)
+    omega.set_ylabel("ω (rad/s)")
+    epsilon.set_title("Angular acceleration ε", fontsize=10)
+    epsilon.set_ylabel("ε (rad/s²)")
+
+
+def _draw_point_rates(
+    speed: Axes, accel: Axes, x: np.ndarray, result: Sweep, moving: list[str]
+) -> None:
+    """Each moving point's \\|v\\| and \\|a\\| against the input."""
+    for name in moving:
+        v = np.asarray(result.points[name]["velocity"], dtype=float)
+        a = np.asarray(result.points[name]["acceleration"], dtype=float)
+        speed.plot(x, np.hypot(v[:, 0], v[:, 1]), lw=1.3, label=name, gid=f"speed:{name}")
+        accel.plot(x, np.hypot(a[:, 0], a[:, 1]), lw=1.3, label=name, gid=f"accel:{name}")
+    speed.set_title("Speed |v| of the points", fontsize=10)
+    speed.set_ylabel("|v| (m/s)")
+    accel.set_title("Acceleration |a| of the points", fontsize=10)
+    accel.set_ylabel("|a| (m/s²)")
+
+
+def _draw_transmission(ax: Axes, x: np.ndarray, result: Sweep) -> None:
+    """Each dyad's transmission angle (degrees), or a note that there is none."""
+    for label, mu in result.transmission.items():
+        ax.plot(x, np.degrees(mu), lw=1.3, label=label, gid=f"transmission:{label}")
+    if not result.transmission:
+        ax.text(
+            0.5,
+            0.5,
+            "no dyad with a transmission angle",
+            ha="center",
+            va="center",
+            transform=ax.transAxes,
+            fontsize=9,
+        )
+    ax.set_title("Transmission angle μ", fontsize=10)
+    ax.set_ylabel("μ (°)")
+
+
+def _draw_balancing(ax: Axes, x: np.ndarray, result: Sweep) -> None:
+    """The balancing moment (or force) of each driver against the input."""
+    for name, values in result.balancing.items():
+        ax.plot(x, values, lw=1.3, label=name, gid=f"balancing:{name}")
+    ax.set_title("Balancing moment (force)", fontsize=10)
+    ax.set_ylabel("M_cb (N·m) or P_cb (N)")

@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+import time
 from pathlib import Path
 
 import numpy as np
@@ -12,20 +13,31 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
+from matplotlib.animation import FFMpegWriter
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgba
+from matplotlib.figure import Figure
 from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 from matplotlib.text import Annotation
+from PIL import Image
 
+from kinematics.cli.main import main
+from kinematics.figures.animation import animate, turn_inputs
 from kinematics.figures.sheets import (
     acceleration_polygon,
     draw_graph,
     draw_mechanism,
+    force_polygon,
     save,
+    sweep_figure,
     velocity_polygon,
 )
+from kinematics.forces import solve_forces
 from kinematics.plan import make_plan
 from kinematics.solve import solve_pose
-from structure.readwrite.edgelist import read_edgelist
+from kinematics.sweep import sweep
+from structure.errors import MechanismError
+from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 from structure.rigidity.constraints import sketch_problems
 
@@ -435,7 +447,6 @@ def test_guide_point_without_a_marker_is_added(slotted_exam) -> None:
     # by hand v_B3 = (−0.5, 0.5) m/s (see _slotted_by_hand)
     path = FIXTURES / "exam_1_slotted_link.edges"
     lines = [ln for ln in path.read_text().splitlines() if not ln.startswith("point B3 ")]
-    from structure.readwrite.edgelist import parse_edgelist
 
     plan = make_plan(analyze(parse_edgelist(lines)))
     ax = velocity_polygon(plan, solve_pose(plan)).axes[0]
@@ -466,8 +477,6 @@ def test_save_formats(fourbar_2_4, tmp_path: Path) -> None:
 
 
 def test_existing_axes_are_drawn_on(fourbar_2_4) -> None:
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     report, plan, state = fourbar_2_4
     fig = Figure()
@@ -634,7 +643,6 @@ def test_kinematic_graph_of_the_oxygen_pump() -> None:
 
 def test_parallel_pairs_are_drawn_apart() -> None:
     # links 2 and 3 joined twice: a pin C and a higher pair K (five-bar with one more contact)
-    from structure.readwrite.edgelist import parse_edgelist
 
     m = parse_edgelist(
         ["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 4 R D", "4 0 R E", "2 3 H K"]
@@ -686,8 +694,6 @@ def test_force_polygons_of_problem_3_4() -> None:
     # rocker 3 about D: C − D = 0.2√2·(1, 1), M3 − D = 0.1√2·(1, 1), P3 = 500√2·(1, −1):
     # −0.2√2·f − 200 = 0 → f = −500√2; R03 = −(P3 + R12) = (0, 500√2). Crank 1: R21 = −R12 at
     # B = (0, 0.1), R01 = −R21, M_cb = −(B × R21) = 0.1·500√2 = 50√2 N·m.
-    from kinematics.figures.sheets import force_polygon
-    from kinematics.forces import solve_forces
 
     _, plan, _ = _solved(FIXTURES / "ch3_3_4_fourbar.edges")
     solution = solve_forces(plan)
@@ -719,8 +725,6 @@ def test_force_polygons_of_problem_3_4() -> None:
 def test_force_polygon_of_problem_3_5() -> None:
     # by hand: rod 2 is a two-force member along C→B = (−√3/2, 1/2); the slide pushes along y;
     # P3 = (1000, 0): R12 = t·(−√3/2, 1/2) with t = 2000/√3, R03 = (0, −t/2)
-    from kinematics.figures.sheets import force_polygon
-    from kinematics.forces import solve_forces
 
     _, plan, _ = _solved(FIXTURES / "ch3_3_5_crank_slider.edges")
     ax = force_polygon(plan, solve_forces(plan), "II(2,3)").axes[0]
@@ -735,9 +739,6 @@ def test_force_polygon_with_weight_and_inertia() -> None:
     # crank of 2 kg, centre of mass S at 0.1 m on the x axis, ω = 10, ε = 0, g = (0, −9.81):
     # a_S = −ω²·S = (−10, 0) → inertia Φ1 = −m·a_S = (20, 0); weight G1 = (0, −19.62);
     # the frame's pin R01 = −(Φ1 + G1); M_cb = −(S × G1) = 0.1·19.62 = 1.962 N·m
-    from kinematics.figures.sheets import force_polygon
-    from kinematics.forces import solve_forces
-    from structure.readwrite.edgelist import parse_edgelist
 
     m = parse_edgelist(
         ["driver 1 omega=10", "0 1 R A", "point A 0 0", "point S 0.1 0 on=1",
@@ -756,8 +757,6 @@ def test_force_polygon_with_weight_and_inertia() -> None:
 def test_force_polygon_of_a_sliding_driver() -> None:
     # problem 3.1: a 2 kg slider driven along x with a = 10 m/s² on a smooth guide: the
     # inertia force −m·a = (−20, 0) N is balanced by the driving force P_cb = m·a = 20 N along x
-    from kinematics.figures.sheets import force_polygon
-    from kinematics.forces import solve_forces
 
     _, plan, _ = _solved(FIXTURES / "ch3_3_1_slider_power.edges")
     ax = force_polygon(plan, solve_forces(plan)).axes[0]
@@ -779,8 +778,6 @@ FORCE_FIXTURES = [
 def test_force_polygons_close_with_the_solved_reactions(path: Path) -> None:
     # each arrow is F/μ_F of a reaction the solver found (or a load of the file), and every
     # group's and driver's polygon closes
-    from kinematics.figures.sheets import force_polygon
-    from kinematics.forces import solve_forces
 
     _, plan, _ = _solved(path)
     solution = solve_forces(plan)
@@ -822,8 +819,6 @@ def _fourbar_bc(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def test_sweep_figure_of_the_fourbar() -> None:
     # ω2, ω3 from the velocity loop v_B + ω2 × (C − B) = ω3 × (C − D) with the closed-form
     # positions; the transmission angle at C between C − B and C − D
-    from kinematics.figures.sheets import sweep_figure
-    from kinematics.sweep import sweep
 
     _, plan, _ = _solved(FIXTURES / "ch2_2_4_fourbar.edges")
     result = sweep(plan, steps=36)
@@ -856,8 +851,6 @@ def test_sweep_figure_of_the_fourbar() -> None:
 
 
 def test_sweep_figure_has_the_balancing_moment() -> None:
-    from kinematics.figures.sheets import sweep_figure
-    from kinematics.sweep import sweep
 
     _, plan, _ = _solved(FIXTURES / "ch3_3_4_fourbar.edges")
     result = sweep(plan, steps=8)
@@ -870,12 +863,6 @@ def test_sweep_figure_has_the_balancing_moment() -> None:
 
 
 def test_animation_gif_has_the_frames(fourbar_2_4, tmp_path: Path) -> None:
-    import time
-
-    from PIL import Image
-
-    from kinematics.figures.animation import animate, turn_inputs
-    from kinematics.sweep import sweep
 
     report, plan, _ = fourbar_2_4
     start = time.perf_counter()
@@ -898,10 +885,6 @@ def test_animation_gif_has_the_frames(fourbar_2_4, tmp_path: Path) -> None:
 
 
 def test_animation_errors(fourbar_2_4, tmp_path: Path, monkeypatch) -> None:
-    from matplotlib.animation import FFMpegWriter
-
-    from kinematics.figures.animation import animate
-    from structure.errors import MechanismError
 
     report, plan, _ = fourbar_2_4
     with pytest.raises(MechanismError, match=r"unsupported animation format '\.avi'"):
@@ -919,7 +902,6 @@ def test_animation_errors(fourbar_2_4, tmp_path: Path, monkeypatch) -> None:
 
 
 def _cli(capsys, *argv: str) -> tuple[int, str, str]:
-    from kinematics.cli.main import main
 
     code = main(list(argv))
     out, err = capsys.readouterr()
@@ -927,7 +909,6 @@ def _cli(capsys, *argv: str) -> tuple[int, str, str]:
 
 
 def test_cli_plots(tmp_path: Path, capsys) -> None:
-    from PIL import Image
 
     graph = tmp_path / "graph.png"
     code, out, err = _cli(
@@ -976,7 +957,6 @@ def test_cli_plot_errors(tmp_path: Path, capsys, monkeypatch) -> None:
     assert code == 1 and err.startswith("error: cannot write") and "No such file" in err
     code, _, err = _cli(capsys, "animate", four, str(tmp_path / "a.webm"))
     assert code == 1 and "unsupported animation format" in err
-    from matplotlib.animation import FFMpegWriter
 
     monkeypatch.setattr(FFMpegWriter, "isAvailable", classmethod(lambda cls: False))
     code, _, err = _cli(capsys, "animate", four, str(tmp_path / "a.mp4"))

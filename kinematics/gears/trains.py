@@ -1,10 +1,8 @@
-"""Gear trains in the kinematic graph: meshes, carriers, Willis relations, exact speed ratios.
+"""Gear trains: Willis relations, exact speed ratios, reduced inertia, forces and losses.
 
-A gear mesh is a higher pair marked ``gear`` with its tooth numbers
-(``2 3 H gear z=25,105 internal=3``). Its carrier is the link that holds both
-gear axes: the link joined by revolute pairs (directly or through a shared
-pin) to both gears; for an ordinary pair on fixed axes that is the ground.
-Each mesh gives one Willis relation in the carrier's frame,
+The meshes and their carriers come from :mod:`structure.meshes` (``Mesh`` and
+``meshes`` stay importable from here). Each mesh gives one Willis relation in
+the carrier's frame,
 
     z_a·(ω_a − ω_c) = ∓ z_b·(ω_b − ω_c)   (− external, + internal teeth),
 
@@ -32,8 +30,11 @@ import numpy as np
 import sympy
 
 from structure.errors import MechanismError, MobilityError
-from structure.model import Mechanism, Pair, PairKind
+from structure.meshes import Mesh, is_planet, meshes
+from structure.model import Mechanism
 
+# Mesh and meshes (the topology of the meshes) are defined in structure.meshes; they stay
+# importable from here
 __all__ = [
     "Mesh",
     "TrainForces",
@@ -46,19 +47,6 @@ __all__ = [
     "train_forces",
     "train_losses",
 ]
-
-
-@dataclass(frozen=True)
-class Mesh:
-    """A gear mesh between links ``a`` and ``b`` with its carrier."""
-
-    pair: Pair
-    a: str
-    b: str
-    za: int | None
-    zb: int | None
-    carrier: str
-    internal: bool
 
 
 @dataclass(frozen=True)
@@ -77,66 +65,13 @@ class TrainRatios:
     teeth_found: Mapping[tuple[int, int], int]
 
 
-def _joined(m: Mechanism) -> dict[str, set[str]]:
-    """Links joined by a revolute pair (or a shared pin point) to each link."""
-    out: dict[str, set[str]] = {link: set() for link in m.links}
-    for p in m.pairs:
-        if p.kind is PairKind.R:
-            out[p.a].add(p.b)
-            out[p.b].add(p.a)
-    for h in m.hinges:
-        for x in h.links:
-            out[x].update(y for y in h.links if y != x)
-    return out
-
-
-def meshes(mechanism: Mechanism) -> tuple[Mesh, ...]:
-    """The gear meshes of ``mechanism`` with their carriers.
-
-    Raises
-    ------
-    MechanismError
-        A mesh whose carrier cannot be found (the gears' axes are on no common link)
-        or is ambiguous.
-    """
-    joined = _joined(mechanism)
-    out = []
-    for p in mechanism.pairs:
-        if not p.gear:
-            continue
-        a, b = p.a, p.b
-        # a gear's axis is fixed in the links it is pinned to (and in itself)
-        carriers = (joined[a] | {a}) & (joined[b] | {b})
-        if len(carriers) != 1:
-            raise MechanismError(
-                f"{mechanism.source}: line {p.line_no}: the gear mesh {p.label} has "
-                + (
-                    "no carrier: its gears' axes are on no common link"
-                    if not carriers
-                    else f"several possible carriers ({', '.join(sorted(carriers))})"
-                )
-            )
-        za, zb = p.teeth if p.teeth is not None else (None, None)
-        out.append(Mesh(p, a, b, za, zb, carriers.pop(), p.internal is not None))
-    return tuple(out)
-
-
 def _coaxial_teeth(mechanism: Mechanism, found: list[Mesh]) -> dict[tuple[int, int], int]:
     """Unknown tooth numbers from equal centre distances of each planet's meshes."""
     solved: dict[tuple[int, int], int] = {}
-    ground = mechanism.ground
-
-    def is_planet(gear: str, carrier: str) -> bool:
-        # pinned to a moving carrier off the carrier's own axis (a pin without the ground)
-        return carrier != ground and any(
-            gear in h.links and carrier in h.links and ground not in h.links
-            for h in mechanism.hinges
-        )
-
     by_planet: dict[tuple[str, str], list[Mesh]] = {}
     for mesh in found:
         for planet in (mesh.a, mesh.b):
-            if planet != mesh.carrier and is_planet(planet, mesh.carrier):
+            if planet != mesh.carrier and is_planet(mechanism, planet, mesh.carrier):
                 by_planet.setdefault((planet, mesh.carrier), []).append(mesh)
     for (planet, _), group in by_planet.items():
         symbols = {}
@@ -306,10 +241,7 @@ def _planet_arms(
         if carrier == ground:
             continue
         for planet in (mesh.a, mesh.b):
-            if planet == ground or not any(
-                planet in h.links and carrier in h.links and ground not in h.links
-                for h in mechanism.hinges
-            ):
+            if not is_planet(mechanism, planet, carrier):
                 continue
             za = mesh.za if mesh.za is not None else ratios.teeth_found.get((mesh.pair.id, 1))
             zb = mesh.zb if mesh.zb is not None else ratios.teeth_found.get((mesh.pair.id, 2))
@@ -373,10 +305,7 @@ def train_forces(
 
     def planet_of(mesh: Mesh) -> str | None:
         for x in (mesh.a, mesh.b):
-            if x != ground and any(
-                x in h.links and carrier in h.links and ground not in h.links
-                for h in mechanism.hinges
-            ):
+            if is_planet(mechanism, x, carrier):
                 return x
         return None
 

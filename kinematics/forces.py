@@ -31,7 +31,6 @@ reported relative to the largest term.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -39,10 +38,14 @@ import numpy as np
 
 from structure.errors import MechanismError
 
-from .equations import Equation, evaluate, rotate_many
+from .equations import Equation, evaluate
+from .errors import IndeterminateError
 from .plan import SolvePlan
-from .solve import Motion, solve_poses
+from .planar import cross, perpendicular, rotate_many, unit, unit_from_degrees
+from .solve import solve_poses
+from .state import Motion
 
+# IndeterminateError is defined in kinematics.errors; it stays importable from here
 __all__ = [
     "ForceSolution",
     "ForceSweep",
@@ -52,10 +55,6 @@ __all__ = [
     "ground_equations",
     "solve_forces",
 ]
-
-
-class IndeterminateError(MechanismError):
-    """Reactions of an over-constrained mechanism (r > 0) are statically indeterminate."""
 
 
 @dataclass(frozen=True)
@@ -173,10 +172,10 @@ def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
             r = lever(link, load.point)
             v, a = motion.qd[link], motion.qdd[link]
             w, e = v[:, 2:3], a[:, 2:3]
-            jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
+            jr = perpendicular(r)
             a_s = a[:, :2] + e * jr - w**2 * r
             f = mass * (gravity - a_s)
-            moment = r[:, 0] * f[:, 1] - r[:, 1] * f[:, 0] - inertia * e[:, 0]
+            moment = cross(r, f) - inertia * e[:, 0]
             add(link, f[:, 0], f[:, 1], moment)
     return out
 
@@ -293,13 +292,13 @@ def _friction_loads(
         c = np.array(m.coordinates(pair.point), dtype=float)  # type: ignore[arg-type]
         p_world, v_y, _ = motion.point(y, c)
         _, v_x, _ = motion.point(x, c)
-        u = rotate_many(motion.q[x][:, 2], np.array([math.cos(pair.angle), math.sin(pair.angle)]))
+        u = rotate_many(motion.q[x][:, 2], unit(pair.angle))
         slip = np.einsum("ni,ni->n", v_y - v_x, u)
         f = -(pair.friction or 0.0) * size[:, None] * np.sign(slip)[:, None] * u
         for link, sign in ((y, 1.0), (x, -1.0)):
             r = p_world - motion.q[link][:, :2]
             g = sign * f
-            add(link, np.column_stack([g, r[:, 0] * g[:, 1] - r[:, 1] * g[:, 0]]))
+            add(link, np.column_stack([g, cross(r, g)]))
         loss += (pair.friction or 0.0) * size * np.abs(slip)
     return loads, loss
 
@@ -368,8 +367,7 @@ def _forces_once(
             r0 += eq.size
         load = balance.get(link)
         if load is not None:
-            t = math.radians(load.values[0])
-            u = np.array([math.cos(t), math.sin(t)])
+            u = unit_from_degrees(load.values[0])
             c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
             rp = rotate_many(motion.q[link][:, 2], c)
             drive = np.stack(
@@ -471,10 +469,9 @@ def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
         if p.kind.value == "R":
             return [Equation("HINGE", link, m.ground, c, pair=p.id)]
         if p.kind.value == "P" and p.angle is not None:
-            u = np.array([math.cos(p.angle), math.sin(p.angle)])
             return [
                 Equation("ANGLE", link, m.ground, pair=p.id),
-                Equation("SLIDE", link, m.ground, c, np.array([-u[1], u[0]]), p.id),
+                Equation("SLIDE", link, m.ground, c, perpendicular(unit(p.angle)), p.id),
             ]
     for h in m.compound_hinges.values():
         if link in h.links and m.ground in h.links:
@@ -512,14 +509,14 @@ def _two_contacts(
         return None
     turned = next((x for x in pair.links if x in motion.q), None)  # the links keep one angle
     t = (pair.angle or 0.0) + (float(motion.q[turned][0, 2]) if turned is not None else 0.0)
-    u = np.array([math.cos(t), math.sin(t)])
+    u = unit(t)
     norm = float(np.hypot(*force))
     half = pair.span / 2
     if norm <= 1e-9 * (1.0 + abs(couple) / half):  # a pure couple: no direction of its own
-        norm, direction = 0.0, np.array([-u[1], u[0]])
+        norm, direction = 0.0, perpendicular(u)
     else:
         direction = force / norm
-    side = float(u[0] * direction[1] - u[1] * direction[0])  # ±1: u × direction
+    side = float(cross(u, direction))  # ±1: u × direction
     # N1 + N2 = |N|; the contacts at −half and +half along u give the moment C
     n1 = (norm - couple / (half * side)) / 2
     n2 = (norm + couple / (half * side)) / 2

@@ -27,7 +27,7 @@ import numpy as np
 from structure.errors import MechanismError, MobilityError
 
 from .plan import SolvePlan
-from .solve import Motion
+from .state import Motion
 
 __all__ = ["reduced_inertia_over"]
 

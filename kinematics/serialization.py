@@ -15,7 +15,7 @@ from typing import Any
 
 from .exact import ExactForces, ExactState
 from .forces import ForceSolution
-from .solve import KinematicState
+from .state import KinematicState
 
 __all__ = ["exact_forces_to_dict", "exact_to_dict", "forces_to_dict", "state_to_dict"]
 

@@ -29,6 +29,7 @@ from structure.errors import EdgeListError, EdgeListProblem
 
 from .forces import forces_over
 from .plan import SolvePlan
+from .planar import cross, norm, units
 from .solve import solve_poses
 
 __all__ = ["Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"]
@@ -91,13 +92,13 @@ def transmission_angle(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> float:
     90.0
     """
     u, v = c - b, c - d
-    cos = float(u @ v) / (float(np.hypot(*u)) * float(np.hypot(*v)))
+    cos = float(u @ v) / (float(norm(u)) * float(norm(v)))
     return math.acos(max(-1.0, min(1.0, cos)))
 
 
 def _angles(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
     u, v = c - b, c - d
-    cos = np.einsum("ij,ij->i", u, v) / (np.hypot(u[:, 0], u[:, 1]) * np.hypot(v[:, 0], v[:, 1]))
+    cos = np.einsum("ij,ij->i", u, v) / (norm(u) * norm(v))
     return np.arccos(np.clip(cos, -1.0, 1.0))
 
 
@@ -176,7 +177,7 @@ def _slide_direction(plan: SolvePlan, motion, pair_id: int, link: str) -> np.nda
     if pair.angle is None:
         return None
     theta = motion.q[link][:, 2] if link in motion.q else np.zeros(len(motion.inputs))
-    return np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
+    return units(pair.angle + theta)
 
 
 def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
@@ -210,8 +211,8 @@ def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.nda
         dirs = [_slide_direction(plan, motion, p.pair, p.links[0]) for p in slides]
         if any(d is None for d in dirs):
             continue
-        cross = np.abs(dirs[0][:, 0] * dirs[1][:, 1] - dirs[0][:, 1] * dirs[1][:, 0])
-        out[g.label] = np.arcsin(np.clip(cross, 0.0, 1.0))
+        sine = np.abs(cross(dirs[0], dirs[1]))
+        out[g.label] = np.arcsin(np.clip(sine, 0.0, 1.0))
     return out
 
 
@@ -237,9 +238,9 @@ def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
             continue
         guide = slide[0].links[1]
         theta = motion.q[guide][:, 2] if guide in motion.q else np.zeros(len(motion.inputs))
-        u = np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
+        u = units(pair.angle + theta)
         rod = points[mid.point]["position"] - points[rod_pin[0].point]["position"]
-        along = np.abs(np.einsum("ij,ij->i", rod, u)) / np.hypot(rod[:, 0], rod[:, 1])
+        along = np.abs(np.einsum("ij,ij->i", rod, u)) / norm(rod)
         out[g.label] = np.arcsin(np.clip(along, 0.0, 1.0))
     return out
 

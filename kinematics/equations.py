@@ -38,10 +38,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from structure.model import Mechanism
+
 from .planar import dot, perpendicular, rotate, rotate_many
 
 # rotate and rotate_many live in kinematics.planar; they stay importable from here
-__all__ = ["Equation", "evaluate", "group_system", "rotate", "rotate_many", "slide_equations"]
+__all__ = [
+    "Equation",
+    "equation_point",
+    "evaluate",
+    "group_system",
+    "rotate",
+    "rotate_many",
+    "slide_equations",
+]
 
 
 @dataclass(frozen=True)
@@ -74,6 +84,23 @@ def slide_equations(
         Equation("ANGLE", a, b, pair=pair),
         Equation("SLIDE", a, b, point, perpendicular(direction), pair),
     )
+
+
+def equation_point(mechanism: Mechanism, eq: Equation) -> str | None:
+    """The name of the point where an equation's pair acts.
+
+    That is its pair's point; for a compound hinge's canonical pair
+    (``eq.pair`` 0) the hinge whose sketch point is the equation's, None if
+    there is none.
+    """
+    if eq.pair:
+        return mechanism.pair(eq.pair).point
+    x, y = float(eq.point[0]), float(eq.point[1])
+    for h in mechanism.compound_hinges.values():
+        p = mechanism.points.get(h.point)
+        if p is not None and (p.x, p.y) == (x, y):
+            return h.point
+    return None
 
 
 def evaluate(

@@ -37,10 +37,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from structure.errors import MechanismError
+from structure.model import Load, Mechanism, PairKind
 
-from .equations import Equation, evaluate
+from .equations import Equation, equation_point, evaluate, slide_equations
 from .errors import IndeterminateError
-from .plan import SolvePlan
+from .plan import DriverStep, GroupStep, SolvePlan
 from .planar import cross, perpendicular, rotate_many, unit, unit_from_degrees
 from .solve import solve_poses
 from .state import Motion
@@ -198,7 +199,7 @@ def _reactions(parts, lam: np.ndarray, m) -> list:
     for eq, _, jb, r0 in parts:
         value = lam[:, r0 : r0 + eq.size]
         on_b = np.einsum("nij,ni->nj", jb, value)
-        point = m.pair(eq.pair).point if eq.pair else _hinge_at(m, eq.point)
+        point = equation_point(m, eq)
         if eq.kind == "HINGE":
             out.append((point, (eq.a, eq.b), "R", on_b[:, :2].copy(), np.zeros(n)))
         elif eq.kind == "ANGLE":
@@ -306,6 +307,7 @@ def _friction_loads(
 def _forces_once(
     plan: SolvePlan, motion: Motion, minimum_norm: bool, extra: Mapping[str, np.ndarray]
 ) -> ForceSweep:
+    """One kinetostatic pass: groups from the last back, then the drivers; ``extra`` loads added."""
     redundant = [s.redundant_link for s in plan.steps if s.group is None]
     if redundant and not minimum_norm:
         raise IndeterminateError(
@@ -320,80 +322,119 @@ def _forces_once(
     carried: dict[str, np.ndarray] = {}
     reactions: list = []
     order: list[str] = []
-    zero3 = np.zeros((n, 3))
     for step in reversed(plan.steps):
-        links = step.links
-        index = {link: i for i, link in enumerate(links)}
-        rows = sum(eq.size for eq in step.equations)
-        jt = np.zeros((n, 3 * len(links), rows))
-        parts = []
-        r = 0
-        for eq in step.equations:
-            ja, jb = _parts(eq, motion)
-            parts.append((eq, ja, jb, r))
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link in index:
-                    k = 3 * index[link]
-                    jt[:, k : k + 3, r : r + eq.size] += np.transpose(part, (0, 2, 1))
-            r += eq.size
-        rhs = np.concatenate(
-            [-(applied.get(x, zero3) + carried.get(x, zero3)) for x in links], axis=1
-        )
-        if jt.shape[1] == jt.shape[2]:
-            lam = np.linalg.solve(jt, rhs[..., None])[..., 0]
-        else:
-            lam = (np.linalg.pinv(jt) @ rhs[..., None])[..., 0]
-        for eq, ja, jb, r0 in parts:
-            value = lam[:, r0 : r0 + eq.size]
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link not in index:
-                    carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
-        reactions.extend(_reactions(parts, lam, m))
+        reactions.extend(_group_reactions(step, motion, applied, carried, m))
         order.append(step.label)
     moments: dict[str, np.ndarray] = {}
     balancing_force = None
     balance = {x.link: x for x in m.loads if x.kind == "balance"}
     power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
     for d in plan.drivers:
-        link = d.link
-        total = applied.get(link, zero3) + carried.get(link, zero3)
-        parts = []
-        cols = []
-        r0 = 0
-        for eq in ground_equations(plan, link):
-            ja, jb = _parts(eq, motion)
-            parts.append((eq, ja, jb, r0))
-            cols.append(np.transpose(ja, (0, 2, 1)))
-            r0 += eq.size
-        load = balance.get(link)
-        if load is not None:
-            u = unit_from_degrees(load.values[0])
-            c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
-            rp = rotate_many(motion.q[link][:, 2], c)
-            drive = np.stack(
-                [np.full(n, u[0]), np.full(n, u[1]), rp[:, 0] * u[1] - rp[:, 1] * u[0]], axis=1
-            )
-        elif d.kind == "R":
-            drive = np.tile([0.0, 0.0, 1.0], (n, 1))
-        else:
-            drive = np.tile([d.direction[0], d.direction[1], 0.0], (n, 1))
-        jt = np.concatenate([*cols, drive[:, :, None]], axis=2)
-        lam = np.linalg.solve(jt, -total[..., None])[..., 0]
+        load = balance.get(d.link)
+        parts, lam, drive = _driver_balance(plan, motion, d, load, applied, carried)
         reactions.extend(_reactions(parts, lam[:, :-1], m))
         if load is not None:
-            balancing_force = lam[:, -1:] * u[None, :]
+            balancing_force = lam[:, -1:] * unit_from_degrees(load.values[0])[None, :]
         else:
-            moments[link] = lam[:, -1].copy()
-        power.append(lam[:, -1] * np.einsum("ni,ni->n", drive, motion.qd[link]))
-        order.append(f"I({link})")
+            moments[d.link] = lam[:, -1].copy()
+        power.append(lam[:, -1] * np.einsum("ni,ni->n", drive, motion.qd[d.link]))
+        order.append(f"I({d.link})")
     reactions.extend(_contact_forces(plan, reactions))
+    return ForceSweep(
+        motion.inputs, tuple(reactions), moments, balancing_force, _residual(power, n), tuple(order)
+    )
+
+
+def _group_reactions(
+    step: GroupStep,
+    motion: Motion,
+    applied: Mapping[str, np.ndarray],
+    carried: dict[str, np.ndarray],
+    m: Mechanism,
+) -> list:
+    """A group's reactions from its links' equilibrium, ``Jᵀ·λ = −Q``, at every pose.
+
+    ``Q`` holds the applied and inertia loads and what the groups solved before
+    (farther from the drivers) pass on; the group's reactions on its known
+    links are added to ``carried`` for the groups solved after it.
+    """
+    n = motion.inputs.shape[0]
+    zero3 = np.zeros((n, 3))
+    links = step.links
+    index = {link: i for i, link in enumerate(links)}
+    rows = sum(eq.size for eq in step.equations)
+    jt = np.zeros((n, 3 * len(links), rows))
+    parts = []
+    r = 0
+    for eq in step.equations:
+        ja, jb = _parts(eq, motion)
+        parts.append((eq, ja, jb, r))
+        for link, part in ((eq.a, ja), (eq.b, jb)):
+            if link in index:
+                k = 3 * index[link]
+                jt[:, k : k + 3, r : r + eq.size] += np.transpose(part, (0, 2, 1))
+        r += eq.size
+    rhs = np.concatenate([-(applied.get(x, zero3) + carried.get(x, zero3)) for x in links], axis=1)
+    if jt.shape[1] == jt.shape[2]:
+        lam = np.linalg.solve(jt, rhs[..., None])[..., 0]
+    else:
+        lam = (np.linalg.pinv(jt) @ rhs[..., None])[..., 0]
+    for eq, ja, jb, r0 in parts:
+        value = lam[:, r0 : r0 + eq.size]
+        for link, part in ((eq.a, ja), (eq.b, jb)):
+            if link not in index:
+                carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
+    return _reactions(parts, lam, m)
+
+
+def _driver_balance(
+    plan: SolvePlan,
+    motion: Motion,
+    driver: DriverStep,
+    load: Load | None,
+    applied: Mapping[str, np.ndarray],
+    carried: Mapping[str, np.ndarray],
+) -> tuple[list, np.ndarray, np.ndarray]:
+    """A driver's equilibrium: its ground pair's multipliers and the balancing load, last.
+
+    The balancing load is the motor's moment (or force along the slide), or
+    the force of a ``balance`` statement ``load`` along its direction.
+    Returns the equation parts, the multipliers (N, rows + 1) and the
+    generalized direction of the balancing load (N, 3).
+    """
+    m = plan.mechanism
+    n = motion.inputs.shape[0]
+    link = driver.link
+    zero3 = np.zeros((n, 3))
+    total = applied.get(link, zero3) + carried.get(link, zero3)
+    parts = []
+    cols = []
+    r0 = 0
+    for eq in ground_equations(plan, link):
+        ja, jb = _parts(eq, motion)
+        parts.append((eq, ja, jb, r0))
+        cols.append(np.transpose(ja, (0, 2, 1)))
+        r0 += eq.size
+    if load is not None:
+        u = unit_from_degrees(load.values[0])
+        c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
+        rp = rotate_many(motion.q[link][:, 2], c)
+        drive = np.stack([np.full(n, u[0]), np.full(n, u[1]), cross(rp, u)], axis=1)
+    elif driver.kind == "R":
+        drive = np.tile([0.0, 0.0, 1.0], (n, 1))
+    else:
+        drive = np.tile([driver.direction[0], driver.direction[1], 0.0], (n, 1))
+    jt = np.concatenate([*cols, drive[:, :, None]], axis=2)
+    lam = np.linalg.solve(jt, -total[..., None])[..., 0]
+    return parts, lam, drive
+
+
+def _residual(power: list[np.ndarray], n: int) -> np.ndarray:
+    """The virtual-power check: |Σ powers| relative to the largest term, at every pose."""
     terms = np.abs(np.array(power)) if power else np.zeros((1, n))
     scale = terms.max(axis=0)
     total_power = np.abs(np.sum(np.array(power), axis=0)) if power else np.zeros(n)
-    residual = np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
-    return ForceSweep(
-        motion.inputs, tuple(reactions), moments, balancing_force, residual, tuple(order)
-    )
+    return np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
 
 
 def solve_forces(
@@ -466,13 +507,10 @@ def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
         if p.other(link) != m.ground:
             continue
         c = np.array(m.coordinates(p.point), dtype=float) if p.point else np.zeros(2)
-        if p.kind.value == "R":
+        if p.kind is PairKind.R:
             return [Equation("HINGE", link, m.ground, c, pair=p.id)]
-        if p.kind.value == "P" and p.angle is not None:
-            return [
-                Equation("ANGLE", link, m.ground, pair=p.id),
-                Equation("SLIDE", link, m.ground, c, perpendicular(unit(p.angle)), p.id),
-            ]
+        if p.kind is PairKind.P and p.angle is not None:
+            return list(slide_equations(link, m.ground, c, unit(p.angle), p.id))
     for h in m.compound_hinges.values():
         if link in h.links and m.ground in h.links:
             c = np.array(m.coordinates(h.point), dtype=float)
@@ -501,7 +539,7 @@ def _two_contacts(
         (
             p
             for p in plan.mechanism.pairs
-            if p.kind.value == "P" and set(p.links) == set(links) and p.point == point
+            if p.kind is PairKind.P and set(p.links) == set(links) and p.point == point
         ),
         None,
     )
@@ -536,11 +574,3 @@ def _contact_forces(plan: SolvePlan, reactions: list) -> list:
                 out.append((point, (a, b), "H", on_virtual.copy(), np.zeros(force.shape[0])))
                 break
     return out
-
-
-def _hinge_at(m, xy) -> str | None:
-    for h in m.compound_hinges.values():
-        p = m.points.get(h.point)
-        if p is not None and (p.x, p.y) == (float(xy[0]), float(xy[1])):
-            return h.point
-    return None

@@ -295,79 +295,23 @@ def train_forces(
     """
     if len(ratios.inputs) != 1:
         raise MobilityError("the force balance needs a single input")
-    ground = mechanism.ground
     carriers = {mesh.carrier for mesh in ratios.meshes}
-    if len(carriers) != 1 or ground in carriers:
+    if len(carriers) != 1 or mechanism.ground in carriers:
         raise MechanismError(
             "the planet force balance covers planetary trains with one moving carrier"
         )
     (carrier,) = carriers
-
-    def planet_of(mesh: Mesh) -> str | None:
-        for x in (mesh.a, mesh.b):
-            if is_planet(mechanism, x, carrier):
-                return x
-        return None
-
-    teeth = {}
-    for mesh in ratios.meshes:
-        za = mesh.za if mesh.za is not None else ratios.teeth_found[(mesh.pair.id, 1)]
-        zb = mesh.zb if mesh.zb is not None else ratios.teeth_found[(mesh.pair.id, 2)]
-        if mesh.pair.module is None:
-            raise MechanismError(f"the gear mesh {mesh.pair.label} needs module= for forces")
-        teeth[mesh.pair.id] = (za, zb, mesh.pair.module)
-    arm: dict[str, float] = {}
-    place: dict[int, float] = {}  # x of each mesh
-    for mesh in ratios.meshes:
-        planet = planet_of(mesh)
-        if planet is None:
-            raise MechanismError(f"the mesh {mesh.pair.label} joins no planet of carrier {carrier}")
-        za, zb, module = teeth[mesh.pair.id]
-        z_planet, z_central = (za, zb) if mesh.a == planet else (zb, za)
-        r_central = module * z_central / 2
-        r_planet = module * z_planet / 2
-        place[mesh.pair.id] = r_central
-        radius = r_central - r_planet if mesh.internal else r_central + r_planet
-        if planet in arm and not math.isclose(arm[planet], radius, rel_tol=1e-9):
-            raise MechanismError(f"the meshes of planet {planet} are not coaxial")
-        arm[planet] = radius
-    unknowns = [mesh.pair.id for mesh in ratios.meshes]
-    moving = sorted(
-        {x for mesh in ratios.meshes for x in (mesh.a, mesh.b)} - {ground} | {carrier},
-        key=mechanism.links.index,
-    )
-    size = len(unknowns) + 1
-    rows: list[list[float]] = []
-    rhs: list[float] = []
-    external = {x.link: x.values[0] for x in mechanism.loads if x.kind == "moment"}
-    for link in moving:
-        row = [0.0] * size
-        for k, mesh in enumerate(ratios.meshes):
-            x = place[mesh.pair.id]
-            if link == carrier:
-                planet = planet_of(mesh)
-                # force on the planet from this mesh, passed to the carrier through the pin
-                sign = 1.0 if mesh.b == planet else -1.0
-                row[k] += arm[planet] * sign
-                continue
-            if link not in (mesh.a, mesh.b):
-                continue
-            sign = 1.0 if link == mesh.b else -1.0
-            lever = x - arm[link] if link in arm else x
-            row[k] += lever * sign
-        if link == ratios.inputs[0]:
-            row[-1] = 1.0
-        rows.append(row)
-        rhs.append(-external.get(link, 0.0))
+    planets, arm, place = _radial_layout(mechanism, ratios, carrier)
+    rows, rhs = _moment_balances(mechanism, ratios, carrier, planets, arm, place)
     solution, *_ = np.linalg.lstsq(np.array(rows), np.array(rhs), rcond=None)
     if not np.allclose(np.array(rows) @ solution, rhs, atol=1e-9 * (1 + np.abs(rhs).max())):
         raise MechanismError("the gear train's force balance has no solution")
-    tooth = {pid: float(solution[k]) for k, pid in enumerate(unknowns)}
+    tooth = {mesh.pair.id: float(solution[k]) for k, mesh in enumerate(ratios.meshes)}
     pins: dict[str, tuple[float, float]] = {}
     for planet in arm:
         fx = fy = 0.0
         for mesh in ratios.meshes:
-            if planet_of(mesh) != planet:
+            if planets[mesh.pair.id] != planet:
                 continue
             sign = 1.0 if mesh.b == planet else -1.0
             f = sign * tooth[mesh.pair.id]
@@ -383,6 +327,102 @@ def train_forces(
         for mesh in ratios.meshes
     }
     return TrainForces(tooth, pins, float(solution[-1]), levers)  # type: ignore[arg-type]
+
+
+def _planet_of(mechanism: Mechanism, mesh: Mesh, carrier: str) -> str:
+    """The gear of ``mesh`` that is a planet of ``carrier``."""
+    for x in (mesh.a, mesh.b):
+        if is_planet(mechanism, x, carrier):
+            return x
+    raise MechanismError(f"the mesh {mesh.pair.label} joins no planet of carrier {carrier}")
+
+
+def _teeth(ratios: TrainRatios) -> dict[int, tuple[int, int, float]]:
+    """``(z_a, z_b, module)`` of every mesh (tooth numbers found by coaxiality included).
+
+    Raises
+    ------
+    MechanismError
+        A mesh without ``module=``.
+    """
+    teeth = {}
+    for mesh in ratios.meshes:
+        za = mesh.za if mesh.za is not None else ratios.teeth_found[(mesh.pair.id, 1)]
+        zb = mesh.zb if mesh.zb is not None else ratios.teeth_found[(mesh.pair.id, 2)]
+        if mesh.pair.module is None:
+            raise MechanismError(f"the gear mesh {mesh.pair.label} needs module= for forces")
+        teeth[mesh.pair.id] = (za, zb, mesh.pair.module)
+    return teeth
+
+
+def _radial_layout(
+    mechanism: Mechanism, ratios: TrainRatios, carrier: str
+) -> tuple[dict[int, str], dict[str, float], dict[int, float]]:
+    """Each mesh's planet, each planet's carrier arm R, each mesh's x (central pitch radius).
+
+    Raises
+    ------
+    MechanismError
+        A mesh without ``module=`` or without a planet, or a planet whose meshes
+        are not coaxial.
+    """
+    teeth = _teeth(ratios)
+    planets: dict[int, str] = {}
+    arm: dict[str, float] = {}
+    place: dict[int, float] = {}  # x of each mesh
+    for mesh in ratios.meshes:
+        planet = planets[mesh.pair.id] = _planet_of(mechanism, mesh, carrier)
+        za, zb, module = teeth[mesh.pair.id]
+        z_planet, z_central = (za, zb) if mesh.a == planet else (zb, za)
+        r_central = module * z_central / 2
+        r_planet = module * z_planet / 2
+        place[mesh.pair.id] = r_central
+        radius = r_central - r_planet if mesh.internal else r_central + r_planet
+        if planet in arm and not math.isclose(arm[planet], radius, rel_tol=1e-9):
+            raise MechanismError(f"the meshes of planet {planet} are not coaxial")
+        arm[planet] = radius
+    return planets, arm, place
+
+
+def _moment_balances(
+    mechanism: Mechanism,
+    ratios: TrainRatios,
+    carrier: str,
+    planets: Mapping[int, str],
+    arm: Mapping[str, float],
+    place: Mapping[int, float],
+) -> tuple[list[list[float]], list[float]]:
+    """Each moving link's moment balance about its axis: rows in the tooth forces and the
+    balancing moment (last), and the right-hand sides (the ``moment`` loads)."""
+    ground = mechanism.ground
+    moving = sorted(
+        {x for mesh in ratios.meshes for x in (mesh.a, mesh.b)} - {ground} | {carrier},
+        key=mechanism.links.index,
+    )
+    size = len(ratios.meshes) + 1
+    rows: list[list[float]] = []
+    rhs: list[float] = []
+    external = {x.link: x.values[0] for x in mechanism.loads if x.kind == "moment"}
+    for link in moving:
+        row = [0.0] * size
+        for k, mesh in enumerate(ratios.meshes):
+            x = place[mesh.pair.id]
+            if link == carrier:
+                planet = planets[mesh.pair.id]
+                # force on the planet from this mesh, passed to the carrier through the pin
+                sign = 1.0 if mesh.b == planet else -1.0
+                row[k] += arm[planet] * sign
+                continue
+            if link not in (mesh.a, mesh.b):
+                continue
+            sign = 1.0 if link == mesh.b else -1.0
+            lever = x - arm[link] if link in arm else x
+            row[k] += lever * sign
+        if link == ratios.inputs[0]:
+            row[-1] = 1.0
+        rows.append(row)
+        rhs.append(-external.get(link, 0.0))
+    return rows, rhs
 
 
 @dataclass(frozen=True)

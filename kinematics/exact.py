@@ -6,9 +6,8 @@ from the sketch coordinates alone; when those are exact (decimals, fractions,
 speeds may stay symbols: ``symbolic=True`` gives ω3 = ω1/2 for the exam's
 slotted link rather than a number.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 0.1", "point C 0.4 0.1", "point D 0.4 -0.3"])
 >>> e = solve_exact(make_plan(analyze(m)))
@@ -259,9 +258,8 @@ def _exact_reactions(rows, lam: sympy.Matrix) -> list:
 def forces_exact(plan: SolvePlan) -> ExactForces:
     """Exact reactions and balancing moment at the sketch pose (see :mod:`kinematics.forces`).
 
-    >>> from structure import parse_edgelist
-    >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
+    >>> from structure import analyze, parse_edgelist
+    >>> from kinematics import make_plan
     >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0",
     ...                     "point B 0.1 0.1", "force 1 B 0 -100"])
     >>> forces_exact(make_plan(analyze(m))).balancing_moment["1"]

@@ -19,9 +19,8 @@ Every solution comes with the virtual-power check: the power of every load,
 inertia load and the balancing moment must add up to zero; its residual is
 reported relative to the largest term.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan
 >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0", "point B 0.1 0",
 ...                     "force 1 B 0 -100"])
 >>> r = solve_forces(make_plan(analyze(m)))

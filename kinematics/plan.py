@@ -5,8 +5,7 @@ lower-pair mechanism, drivers and Assur groups) and the sketch coordinates
 into what the solvers need: for each driver its pivot or slide, for each group
 its links and the equations of its pairs. Nothing is solved here.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
+>>> from structure import analyze, parse_edgelist
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 1", "point C 2 1", "point D 2 0"])
 >>> plan = make_plan(analyze(m))

@@ -23,10 +23,8 @@ closes. Groups that are not dyads (triads and higher) have no such equations.
 The notation is :mod:`kinematics.explain`'s: the point of link 3 at B is
 ``B3`` (:func:`point_label`).
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_pose
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan, solve_pose
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 0.1", "point C 0.4 0.1", "point D 0.4 -0.3"])
 >>> plan = make_plan(analyze(m)); state = solve_pose(plan)
@@ -110,10 +108,8 @@ def slide_angle(plan: SolvePlan, state: KinematicState, pair_id: int) -> float:
     The angle is the pair's ``angle=`` plus the turn of its moving link (of
     the first link when neither is the ground).
 
-    >>> from structure import parse_edgelist
-    >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
-    >>> from kinematics.solve import solve_pose
+    >>> from structure import analyze, parse_edgelist
+    >>> from kinematics import make_plan, solve_pose
     >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "1 2 R B", "2 3 R C",
     ...                     "3 0 P C angle=30", "point A 0 0", "point B 0 0.1", "point C 0.3 0"])
     >>> plan = make_plan(analyze(m)); state = solve_pose(plan)

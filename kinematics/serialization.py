@@ -1,9 +1,7 @@
 """Kinematic results as plain data (JSON-ready dicts), SI units and radians.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_pose
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan, solve_pose
 >>> m = parse_edgelist(["driver 1 omega=2", "0 1 R A", "point A 0 0"])
 >>> state_to_dict(solve_pose(make_plan(analyze(m))))["links"]["1"]["omega"]
 2.0

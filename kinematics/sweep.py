@@ -5,9 +5,8 @@ sketch is kept by continuity; a pose that cannot be assembled or a dead centre
 stops the sweep with the error naming the group and the input, never a NaN.
 Results are numpy arrays, one row per pose, ready to plot or export.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0.1 0", "point C 0.3 0.3", "point D 0.4 0"])
 >>> s = sweep(make_plan(analyze(m)), steps=8)
@@ -254,9 +253,8 @@ def parse_inputs(lines, plan: SolvePlan, source: str = "<inputs>") -> np.ndarray
     sets the column order; without it the columns follow the drivers' order.
     Every bad line is reported, with its number.
 
-    >>> from structure import parse_edgelist
-    >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
+    >>> from structure import analyze, parse_edgelist
+    >>> from kinematics import make_plan
     >>> plan = make_plan(analyze(parse_edgelist(["driver 1", "0 1 R A", "point A 0 0"])))
     >>> parse_inputs(["# crank angle", "0", "90"], plan).round(6).tolist()
     [[0.0], [1.570796]]

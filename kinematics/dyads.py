@@ -48,7 +48,7 @@ from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
 
-__all__ = ["frame_dyad", "known_frame", "place_dyad"]
+__all__ = ["frame_dyad", "place_dyad"]
 
 _R, _P = PairKind.R, PairKind.P
 
@@ -56,7 +56,7 @@ _R, _P = PairKind.R, PairKind.P
 # ---------------------------------------------------------------- shared pieces
 
 
-def known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
+def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
     """The frame of a link solved earlier (the ground's if it is not a moving link).
 
     ``tables`` are the solve's ``(q, qd, qdd)`` tables; a link solved without a
@@ -123,7 +123,7 @@ def _pin(frames: dict[str, Frame], tables: tuple, pins: dict, link: str, point: 
     key = (link, float(point[0]), float(point[1]))
     found = pins.get(key)
     if found is None:
-        found = pins[key] = known_frame(frames, tables, link).point(point)
+        found = pins[key] = _known_frame(frames, tables, link).point(point)
     return found
 
 
@@ -331,7 +331,7 @@ def _frame_rrp(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) 
         return False
     s1 = c - b
     len1 = float(s1 @ s1)
-    guide = known_frame(solve.frames, solve.tables, ext[slider].links[1])
+    guide = _known_frame(solve.frames, solve.tables, ext[slider].links[1])
     pin_b = bx, by, bvx, bvy, bax, bay = solve.pin(ext[rod].links[1], b)
     origin = guide.point(c)  # the guide's point at C in the sketch
     ux = guide.cos * u0[0] - guide.sin * u0[1]  # the slide's direction at every pose

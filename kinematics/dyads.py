@@ -50,8 +50,6 @@ from .planar import cross, rotate_many, unit, vectors
 
 __all__ = ["frame_dyad", "place_dyad"]
 
-_R, _P = PairKind.R, PairKind.P
-
 
 # ---------------------------------------------------------------- shared pieces
 
@@ -319,8 +317,8 @@ def _rrr_rates(
 def _frame_rrp(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) -> bool:
     """RRP: a rod from pin B to joint C, and a slider at C on the guide of a known link."""
     step, plan = solve.step, solve.plan
-    rod = next((x for x in step.links if ext[x].kind is _R), None)
-    slider = next((x for x in step.links if ext[x].kind is _P), None)
+    rod = next((x for x in step.links if ext[x].kind is PairKind.R), None)
+    slider = next((x for x in step.links if ext[x].kind is PairKind.P), None)
     if rod is None or slider is None:
         return False
     b, u0 = _sketch_point(plan, ext[rod].point), _direction(plan, ext[slider].pair)
@@ -448,7 +446,10 @@ def _read_dyad(step: GroupStep) -> _Dyad | None:
         return None
     l1, l2 = step.links
     dyad = _Dyad(l1, l2, ext[l1][0], mid, ext[l2][0])
-    if dyad.kinds in ((_P, _R, _R), (_P, _P, _R)):  # read it from the other end
+    if dyad.kinds in (
+        (PairKind.P, PairKind.R, PairKind.R),
+        (PairKind.P, PairKind.P, PairKind.R),
+    ):  # read it from the other end
         dyad = _Dyad(l2, l1, ext[l2][0], mid, ext[l1][0])
     return dyad
 
@@ -563,7 +564,7 @@ def _place_rpp(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, dy
 
 
 _PLACE_BY_KINDS: dict[tuple[PairKind, PairKind, PairKind], Callable[..., bool]] = {
-    (_R, _P, _R): _place_rpr,
-    (_P, _R, _P): _place_prp,
-    (_R, _P, _P): _place_rpp,
+    (PairKind.R, PairKind.P, PairKind.R): _place_rpr,
+    (PairKind.P, PairKind.R, PairKind.P): _place_prp,
+    (PairKind.R, PairKind.P, PairKind.P): _place_rpp,
 }

@@ -82,7 +82,13 @@ def _unit(degrees: float | None) -> sympy.Matrix:
 
 
 def _perp(v: sympy.Matrix) -> sympy.Matrix:
+    """``J·v`` for an exact vector (what :func:`kinematics.planar.perpendicular` does to arrays)."""
     return sympy.Matrix([-v[1], v[0]])
+
+
+def _cross(a: sympy.Matrix, b: sympy.Matrix) -> sympy.Expr:
+    """``a × b`` (z) for exact vectors (what :func:`kinematics.planar.cross` does to arrays)."""
+    return a[0] * b[1] - a[1] * b[0]
 
 
 def _rows(equations, plan: SolvePlan):
@@ -221,7 +227,7 @@ def _exact_loads(plan: SolvePlan, kin: ExactState) -> dict[str, sympy.Matrix]:
         if load.kind == "force":
             c = _exact_point(m, load.point)
             f = sympy.Matrix([number(load, 0), number(load, 1)])
-            add(load.link, sympy.Matrix([f[0], f[1], c[0] * f[1] - c[1] * f[0]]))
+            add(load.link, sympy.Matrix([f[0], f[1], _cross(c, f)]))
         elif load.kind == "moment":
             add(load.link, sympy.Matrix([0, 0, number(load, 0)]))
         elif load.kind == "mass":
@@ -230,7 +236,7 @@ def _exact_loads(plan: SolvePlan, kin: ExactState) -> dict[str, sympy.Matrix]:
             v, a = kin.q_dot[load.link], kin.q_ddot[load.link]
             a_s = a[:2, 0] + a[2] * _perp(c) - v[2] ** 2 * c
             f = mass * (gravity - a_s)
-            add(load.link, sympy.Matrix([f[0], f[1], c[0] * f[1] - c[1] * f[0] - inertia * a[2]]))
+            add(load.link, sympy.Matrix([f[0], f[1], _cross(c, f) - inertia * a[2]]))
     return out
 
 
@@ -347,7 +353,7 @@ def _exact_driver_balance(
     if load is not None:
         u = _unit(load.values[0])
         c = _exact_point(m, load.point)
-        drive = sympy.Matrix([u[0], u[1], c[0] * u[1] - c[1] * u[0]])
+        drive = sympy.Matrix([u[0], u[1], _cross(c, u)])
     elif driver.kind == "R":
         drive = sympy.Matrix([0, 0, 1])
     else:

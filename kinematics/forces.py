@@ -41,7 +41,7 @@ from structure.model import Load, Mechanism, PairKind
 from .equations import Equation, equation_point, evaluate, slide_equations
 from .errors import IndeterminateError
 from .plan import DriverStep, GroupStep, SolvePlan
-from .planar import cross, perpendicular, rotate_many, unit, unit_from_degrees
+from .planar import cross, norm, perpendicular, rotate_many, unit, unit_from_degrees
 from .solve import solve_poses
 from .state import Motion
 
@@ -75,7 +75,7 @@ class Reaction:
 
     @property
     def magnitude(self) -> float:
-        return float(np.hypot(*self.force))
+        return float(norm(self.force))
 
 
 @dataclass(frozen=True)
@@ -280,7 +280,7 @@ def _friction_loads(
         if found is None:
             continue
         _, (x, y), _, force, _ = found
-        size = np.hypot(force[:, 0], force[:, 1])
+        size = norm(force)
         wx, wy = motion.qd[x][:, 2], motion.qd[y][:, 2]
         if kind == "R":
             spin = np.sign(wy - wx)
@@ -547,16 +547,16 @@ def _two_contacts(
     turned = next((x for x in pair.links if x in motion.q), None)  # the links keep one angle
     t = (pair.angle or 0.0) + (float(motion.q[turned][0, 2]) if turned is not None else 0.0)
     u = unit(t)
-    norm = float(np.hypot(*force))
+    size = float(norm(force))
     half = pair.span / 2
-    if norm <= 1e-9 * (1.0 + abs(couple) / half):  # a pure couple: no direction of its own
-        norm, direction = 0.0, perpendicular(u)
+    if size <= 1e-9 * (1.0 + abs(couple) / half):  # a pure couple: no direction of its own
+        size, direction = 0.0, perpendicular(u)
     else:
-        direction = force / norm
+        direction = force / size
     side = float(cross(u, direction))  # ±1: u × direction
     # N1 + N2 = |N|; the contacts at −half and +half along u give the moment C
-    n1 = (norm - couple / (half * side)) / 2
-    n2 = (norm + couple / (half * side)) / 2
+    n1 = (size - couple / (half * side)) / 2
+    n2 = (size + couple / (half * side)) / 2
     return n1 * direction, n2 * direction
 
 

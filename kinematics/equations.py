@@ -14,8 +14,9 @@ GEAR    1     (θ_a − θ_c) + k·(θ_b − θ_c) = 0: gears a, b rolling on ea
               their axes on the carrier c; k = ±z_b/z_a (+ external, − internal)
 ======  ====  ===============================================================
 
-A GEAR equation involves three links; the group solver handles it itself
-(:func:`evaluate` covers the two-link pairs).
+A GEAR equation involves three links; :func:`group_system` handles it itself
+(:func:`evaluate` covers the two-link pairs). :func:`group_system` stacks the
+equations of a group into its residual, Jacobian and velocity terms.
 
 :func:`evaluate` gives, for many poses at once (arrays with a leading pose
 axis), the residual Φ, the partial derivatives with respect to ``(x, y, θ)``
@@ -32,34 +33,25 @@ of each link, and the term ``(dJ/dt)·q̇`` of the acceleration equation
 
 from __future__ import annotations
 
-import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Equation", "evaluate", "rotate", "rotate_many"]
+from structure.model import Mechanism
 
+from .planar import dot, perpendicular, rotate, rotate_many
 
-def rotate(theta: float, v: np.ndarray) -> np.ndarray:
-    """``R(θ)·v`` for one angle."""
-    c, s = math.cos(theta), math.sin(theta)
-    return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
-
-
-def rotate_many(theta: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """``R(θ_k)·v`` for an array of angles (shape (N,)); ``v`` shape (2,) or (N, 2)."""
-    c, s = np.cos(theta), np.sin(theta)
-    vx, vy = (v[..., 0], v[..., 1])
-    return np.stack([c * vx - s * vy, s * vx + c * vy], axis=-1)
-
-
-def _perp(v: np.ndarray) -> np.ndarray:
-    """``J·v``: v turned by +90°."""
-    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
-
-
-def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return np.einsum("...i,...i->...", a, b)
+# rotate and rotate_many live in kinematics.planar; they stay importable from here
+__all__ = [
+    "Equation",
+    "equation_point",
+    "evaluate",
+    "group_system",
+    "rotate",
+    "rotate_many",
+    "slide_equations",
+]
 
 
 @dataclass(frozen=True)
@@ -84,6 +76,33 @@ class Equation:
         return 2 if self.kind == "HINGE" else 1
 
 
+def slide_equations(
+    a: str, b: str, point: np.ndarray, direction: np.ndarray, pair: int
+) -> tuple[Equation, Equation]:
+    """A prismatic pair's two equations: ANGLE, then SLIDE along ``direction`` (sketch, unit)."""
+    return (
+        Equation("ANGLE", a, b, pair=pair),
+        Equation("SLIDE", a, b, point, perpendicular(direction), pair),
+    )
+
+
+def equation_point(mechanism: Mechanism, eq: Equation) -> str | None:
+    """The name of the point where an equation's pair acts.
+
+    That is its pair's point; for a compound hinge's canonical pair
+    (``eq.pair`` 0) the hinge whose sketch point is the equation's, None if
+    there is none.
+    """
+    if eq.pair:
+        return mechanism.pair(eq.pair).point
+    x, y = float(eq.point[0]), float(eq.point[1])
+    for h in mechanism.compound_hinges.values():
+        p = mechanism.points.get(h.point)
+        if p is not None and (p.x, p.y) == (x, y):
+            return h.point
+    return None
+
+
 def evaluate(
     eq: Equation, qa: np.ndarray, qb: np.ndarray, va: np.ndarray, vb: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -93,7 +112,7 @@ def evaluate(
     """
     n = qa.shape[0]
     if eq.kind == "GEAR":
-        raise ValueError("a GEAR equation involves three links: see kinematics.solve._system")
+        raise ValueError("a GEAR equation involves three links: see group_system")
     if eq.kind == "ANGLE":
         phi = (qa[:, 2] - qb[:, 2])[:, None]
         ja = np.broadcast_to(np.array([[[0.0, 0.0, 1.0]]]), (n, 1, 3))
@@ -106,22 +125,73 @@ def evaluate(
     wa, wb = va[:, 2:3], vb[:, 2:3]
     if eq.kind == "HINGE":
         eye = np.broadcast_to(np.eye(2), (n, 2, 2))
-        ja = np.concatenate([eye, _perp(ra)[:, :, None]], axis=2)
-        jb = -np.concatenate([eye, _perp(rb)[:, :, None]], axis=2)
+        ja = np.concatenate([eye, perpendicular(ra)[:, :, None]], axis=2)
+        jb = -np.concatenate([eye, perpendicular(rb)[:, :, None]], axis=2)
         bias = -(wa**2) * ra + wb**2 * rb
         return pa - pb, ja, jb, bias
     # SLIDE: the guide turns with link a
     nrm = rotate_many(qa[:, 2], eq.normal)
-    jn = _perp(nrm)
+    jn = perpendicular(nrm)
     d = pb - pa
-    phi = _dot(nrm, d)[:, None]
-    ja = np.stack([-nrm[:, 0], -nrm[:, 1], _dot(jn, d) - _dot(nrm, _perp(ra))], axis=1)[:, None]
-    jb = np.stack([nrm[:, 0], nrm[:, 1], _dot(nrm, _perp(rb))], axis=1)[:, None]
-    d_dot = vb[:, :2] + wb * _perp(rb) - va[:, :2] - wa * _perp(ra)
+    phi = dot(nrm, d)[:, None]
+    lever_a = dot(jn, d) - dot(nrm, perpendicular(ra))
+    ja = np.stack([-nrm[:, 0], -nrm[:, 1], lever_a], axis=1)[:, None]
+    jb = np.stack([nrm[:, 0], nrm[:, 1], dot(nrm, perpendicular(rb))], axis=1)[:, None]
+    d_dot = vb[:, :2] + wb * perpendicular(rb) - va[:, :2] - wa * perpendicular(ra)
     w_a, w_b = wa[:, 0], wb[:, 0]
     bias = (
-        -(w_a**2) * _dot(nrm, d)
-        + 2.0 * w_a * _dot(jn, d_dot)
-        + _dot(nrm, -(w_b[:, None] ** 2) * rb + (w_a[:, None] ** 2) * ra)
+        -(w_a**2) * dot(nrm, d)
+        + 2.0 * w_a * dot(jn, d_dot)
+        + dot(nrm, -(w_b[:, None] ** 2) * rb + (w_a[:, None] ** 2) * ra)
     )[:, None]
     return phi, ja, jb, bias
+
+
+def group_system(
+    links: tuple[str, ...],
+    equations: tuple[Equation, ...],
+    q: Mapping[str, np.ndarray],
+    v: Mapping[str, np.ndarray],
+    n: int,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """A group's residual (N, m), Jacobian (N, m, 3·links), known-link terms J_k·v_k, (dJ/dt)·v.
+
+    ``links`` are the group's unknown links (their columns of the Jacobian, in
+    order); the other links an equation touches are known: their poses ``q``
+    and rates ``v`` (absent: the ground, at rest) give the known terms.
+    """
+    index = {link: i for i, link in enumerate(links)}
+    m = 3 * len(links)
+    rows_total = sum(eq.size for eq in equations)
+    zero = np.zeros((n, 3))
+    phi = np.zeros((n, rows_total))
+    jac = np.zeros((n, rows_total, m))
+    known = np.zeros((n, rows_total))
+    bias = np.zeros((n, rows_total))
+    row = 0
+    for eq in equations:
+        if eq.kind == "GEAR":  # (θa − θc) + k·(θb − θc) = 0: linear, no bias term
+            coefficients = ((eq.a, 1.0), (eq.b, eq.ratio), (eq.carrier, -1.0 - eq.ratio))
+            for link, k in coefficients:
+                phi[:, row] += k * q.get(link, zero)[:, 2]
+                i = index.get(link)
+                if i is None:
+                    known[:, row] += k * v.get(link, zero)[:, 2]
+                else:
+                    jac[:, row, 3 * i + 2] += k
+            row += 1
+            continue
+        qa, qb = q.get(eq.a, zero), q.get(eq.b, zero)
+        va, vb = v.get(eq.a, zero), v.get(eq.b, zero)
+        f, ja, jb, g = evaluate(eq, qa, qb, va, vb)
+        rows = slice(row, row + eq.size)
+        phi[:, rows] = f
+        bias[:, rows] = g
+        for link, part, vel in ((eq.a, ja, va), (eq.b, jb, vb)):
+            k = index.get(link)
+            if k is None:
+                known[:, rows] += np.einsum("nij,nj->ni", part, vel)
+            else:
+                jac[:, rows, 3 * k : 3 * k + 3] += part
+        row += eq.size
+    return phi, jac, known, bias

@@ -6,9 +6,8 @@ from the sketch coordinates alone; when those are exact (decimals, fractions,
 speeds may stay symbols: ``symbolic=True`` gives ω3 = ω1/2 for the exam's
 slotted link rather than a number.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 0.1", "point C 0.4 0.1", "point D 0.4 -0.3"])
 >>> e = solve_exact(make_plan(analyze(m)))
@@ -27,10 +26,12 @@ from dataclasses import dataclass
 import sympy
 
 from structure.expressions import exact_float, exact_value
-from structure.model import Mechanism
+from structure.model import Load, Mechanism
 
-from .forces import IndeterminateError, ground_equations
-from .plan import SolvePlan
+from .equations import Equation, equation_point
+from .errors import IndeterminateError
+from .forces import ground_equations
+from .plan import DriverStep, GroupStep, SolvePlan
 
 __all__ = ["ExactForces", "ExactState", "forces_exact", "solve_exact"]
 
@@ -57,13 +58,12 @@ def _exact_point(m: Mechanism, name: str | None) -> sympy.Matrix:
     return sympy.Matrix([x, y])
 
 
-def _name_of(m: Mechanism, xy) -> str:
-    """The hinge whose sketch point is ``xy`` (for a compound hinge's canonical pair)."""
-    for h in m.compound_hinges.values():
-        p = m.points.get(h.point)
-        if p is not None and (p.x, p.y) == (float(xy[0]), float(xy[1])):
-            return h.point
-    raise ValueError(f"no compound hinge at {tuple(xy)}")
+def _point_name(m: Mechanism, eq: Equation) -> str | None:
+    """The point an equation's pair acts at (a compound hinge's for its canonical pair)."""
+    name = equation_point(m, eq)
+    if name is None and not eq.pair:
+        raise ValueError(f"no compound hinge at {tuple(eq.point)}")
+    return name
 
 
 def _unit(degrees: float | None) -> sympy.Matrix:
@@ -82,7 +82,13 @@ def _unit(degrees: float | None) -> sympy.Matrix:
 
 
 def _perp(v: sympy.Matrix) -> sympy.Matrix:
+    """``J·v`` for an exact vector (what :func:`kinematics.planar.perpendicular` does to arrays)."""
     return sympy.Matrix([-v[1], v[0]])
+
+
+def _cross(a: sympy.Matrix, b: sympy.Matrix) -> sympy.Expr:
+    """``a × b`` (z) for exact vectors (what :func:`kinematics.planar.cross` does to arrays)."""
+    return a[0] * b[1] - a[1] * b[0]
 
 
 def _rows(equations, plan: SolvePlan):
@@ -91,9 +97,7 @@ def _rows(equations, plan: SolvePlan):
     out = []
     for eq in equations:
         pair = m.pair(eq.pair) if eq.pair else None
-        # a compound hinge's canonical pair has no id: the sketch point is the same pin
-        name = pair.point if pair is not None else _name_of(m, eq.point)
-        c = _exact_point(m, name)
+        c = _exact_point(m, _point_name(m, eq))
         if eq.kind == "HINGE":
             ja = sympy.Matrix.hstack(sympy.eye(2), _perp(c))
             out.append((eq, ja, -ja, c, None))
@@ -223,7 +227,7 @@ def _exact_loads(plan: SolvePlan, kin: ExactState) -> dict[str, sympy.Matrix]:
         if load.kind == "force":
             c = _exact_point(m, load.point)
             f = sympy.Matrix([number(load, 0), number(load, 1)])
-            add(load.link, sympy.Matrix([f[0], f[1], c[0] * f[1] - c[1] * f[0]]))
+            add(load.link, sympy.Matrix([f[0], f[1], _cross(c, f)]))
         elif load.kind == "moment":
             add(load.link, sympy.Matrix([0, 0, number(load, 0)]))
         elif load.kind == "mass":
@@ -232,7 +236,7 @@ def _exact_loads(plan: SolvePlan, kin: ExactState) -> dict[str, sympy.Matrix]:
             v, a = kin.q_dot[load.link], kin.q_ddot[load.link]
             a_s = a[:2, 0] + a[2] * _perp(c) - v[2] ** 2 * c
             f = mass * (gravity - a_s)
-            add(load.link, sympy.Matrix([f[0], f[1], c[0] * f[1] - c[1] * f[0] - inertia * a[2]]))
+            add(load.link, sympy.Matrix([f[0], f[1], _cross(c, f) - inertia * a[2]]))
     return out
 
 
@@ -260,9 +264,8 @@ def _exact_reactions(rows, lam: sympy.Matrix) -> list:
 def forces_exact(plan: SolvePlan) -> ExactForces:
     """Exact reactions and balancing moment at the sketch pose (see :mod:`kinematics.forces`).
 
-    >>> from structure import parse_edgelist
-    >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
+    >>> from structure import analyze, parse_edgelist
+    >>> from kinematics import make_plan
     >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0",
     ...                     "point B 0.1 0.1", "force 1 B 0 -100"])
     >>> forces_exact(make_plan(analyze(m))).balancing_moment["1"]
@@ -281,56 +284,83 @@ def forces_exact(plan: SolvePlan) -> ExactForces:
     carried: dict[str, sympy.Matrix] = {}
     reactions = []
     for step in reversed(plan.steps):
-        rows = _rows(step.equations, plan)
-        index = {link: i for i, link in enumerate(step.links)}
-        size = sum(eq.size for eq, *_ in rows)
-        jt = sympy.zeros(3 * len(index), size)
-        r = 0
-        for eq, ja, jb, _, _ in rows:
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link in index:
-                    jt[3 * index[link] : 3 * index[link] + 3, r : r + eq.size] = part.T
-            r += eq.size
-        rhs = sympy.Matrix.vstack(
-            *[-(loads.get(x, sympy.zeros(3, 1)) + carried.get(x, sympy.zeros(3, 1))) for x in index]
-        )
-        lam = jt.LUsolve(rhs)
-        r = 0
-        for eq, ja, jb, _, _ in rows:
-            value = lam[r : r + eq.size, 0]
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link not in index:
-                    carried[link] = carried.get(link, sympy.zeros(3, 1)) + part.T * value
-            r += eq.size
-        reactions.extend(_exact_reactions(rows, lam))
+        reactions.extend(_exact_group_reactions(plan, step, loads, carried))
     moments: dict[str, sympy.Expr] = {}
     balancing_force = None
     balance = {x.link: x for x in m.loads if x.kind == "balance"}
     for d in plan.drivers:
-        rows = _rows(ground_equations(plan, d.link), plan)
-        cols = [ja.T for _, ja, _, _, _ in rows]
         load = balance.get(d.link)
-        if load is not None:
-            u = _unit(load.values[0])
-            c = _exact_point(m, load.point)
-            drive = sympy.Matrix([u[0], u[1], c[0] * u[1] - c[1] * u[0]])
-        elif d.kind == "R":
-            drive = sympy.Matrix([0, 0, 1])
-        else:
-            drive = sympy.Matrix([*_unit(m.ground_joint(d.link).pair.angle_deg), 0])
-        jt = sympy.Matrix.hstack(*cols, drive)
-        total = loads.get(d.link, sympy.zeros(3, 1)) + carried.get(d.link, sympy.zeros(3, 1))
-        lam = jt.LUsolve(-total)
+        rows, lam, direction = _exact_driver_balance(plan, d, load, loads, carried)
         reactions.extend(_exact_reactions(rows, lam[:-1, 0]))
         if load is not None:
-            balancing_force = (sympy.simplify(lam[-1] * u[0]), sympy.simplify(lam[-1] * u[1]))
+            balancing_force = (
+                sympy.simplify(lam[-1] * direction[0]),
+                sympy.simplify(lam[-1] * direction[1]),
+            )
         else:
             moments[d.link] = sympy.simplify(lam[-1])
     out = tuple(
-        (m.pair(eq.pair).point if eq.pair else _name_of(m, eq.point), links, kind, force, couple)
+        (_point_name(m, eq), links, kind, force, couple)
         for eq, links, kind, force, couple in reactions
     )
     return ExactForces(out, moments, balancing_force)
+
+
+def _exact_group_reactions(
+    plan: SolvePlan,
+    step: GroupStep,
+    loads: Mapping[str, sympy.Matrix],
+    carried: dict[str, sympy.Matrix],
+) -> list:
+    """A group's exact reactions, ``Jᵀ·λ = −Q``; its reactions on known links go to ``carried``."""
+    rows = _rows(step.equations, plan)
+    index = {link: i for i, link in enumerate(step.links)}
+    size = sum(eq.size for eq, *_ in rows)
+    jt = sympy.zeros(3 * len(index), size)
+    r = 0
+    for eq, ja, jb, _, _ in rows:
+        for link, part in ((eq.a, ja), (eq.b, jb)):
+            if link in index:
+                jt[3 * index[link] : 3 * index[link] + 3, r : r + eq.size] = part.T
+        r += eq.size
+    rhs = sympy.Matrix.vstack(
+        *[-(loads.get(x, sympy.zeros(3, 1)) + carried.get(x, sympy.zeros(3, 1))) for x in index]
+    )
+    lam = jt.LUsolve(rhs)
+    r = 0
+    for eq, ja, jb, _, _ in rows:
+        value = lam[r : r + eq.size, 0]
+        for link, part in ((eq.a, ja), (eq.b, jb)):
+            if link not in index:
+                carried[link] = carried.get(link, sympy.zeros(3, 1)) + part.T * value
+        r += eq.size
+    return _exact_reactions(rows, lam)
+
+
+def _exact_driver_balance(
+    plan: SolvePlan,
+    driver: DriverStep,
+    load: Load | None,
+    loads: Mapping[str, sympy.Matrix],
+    carried: Mapping[str, sympy.Matrix],
+) -> tuple[list, sympy.Matrix, sympy.Matrix | None]:
+    """A driver's exact equilibrium: its ground pair's rows, the multipliers (balancing load
+    last) and the direction of a ``balance`` statement's force (None for the motor's)."""
+    m = plan.mechanism
+    rows = _rows(ground_equations(plan, driver.link), plan)
+    cols = [ja.T for _, ja, _, _, _ in rows]
+    u = None
+    if load is not None:
+        u = _unit(load.values[0])
+        c = _exact_point(m, load.point)
+        drive = sympy.Matrix([u[0], u[1], _cross(c, u)])
+    elif driver.kind == "R":
+        drive = sympy.Matrix([0, 0, 1])
+    else:
+        drive = sympy.Matrix([*_unit(m.ground_joint(driver.link).pair.angle_deg), 0])
+    jt = sympy.Matrix.hstack(*cols, drive)
+    total = loads.get(driver.link, sympy.zeros(3, 1)) + carried.get(driver.link, sympy.zeros(3, 1))
+    return rows, jt.LUsolve(-total), u
 
 
 def _solve(jac: sympy.Matrix, rhs: sympy.Matrix) -> sympy.Matrix:

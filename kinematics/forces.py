@@ -19,9 +19,8 @@ Every solution comes with the virtual-power check: the power of every load,
 inertia load and the balancing moment must add up to zero; its residual is
 reported relative to the largest term.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan
 >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0", "point B 0.1 0",
 ...                     "force 1 B 0 -100"])
 >>> r = solve_forces(make_plan(analyze(m)))
@@ -31,18 +30,22 @@ reported relative to the largest term.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from structure.errors import MechanismError
+from structure.model import Load, Mechanism, PairKind
 
-from .equations import Equation, evaluate, rotate_many
-from .plan import SolvePlan
-from .solve import Motion, solve_poses
+from .equations import Equation, equation_point, evaluate, slide_equations
+from .errors import IndeterminateError
+from .plan import DriverStep, GroupStep, SolvePlan
+from .planar import cross, norm, perpendicular, rotate_many, unit, unit_from_degrees
+from .solve import solve_poses
+from .state import Motion
 
+# IndeterminateError is defined in kinematics.errors; it stays importable from here
 __all__ = [
     "ForceSolution",
     "ForceSweep",
@@ -52,10 +55,6 @@ __all__ = [
     "ground_equations",
     "solve_forces",
 ]
-
-
-class IndeterminateError(MechanismError):
-    """Reactions of an over-constrained mechanism (r > 0) are statically indeterminate."""
 
 
 @dataclass(frozen=True)
@@ -76,7 +75,7 @@ class Reaction:
 
     @property
     def magnitude(self) -> float:
-        return float(np.hypot(*self.force))
+        return float(norm(self.force))
 
 
 @dataclass(frozen=True)
@@ -173,10 +172,10 @@ def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
             r = lever(link, load.point)
             v, a = motion.qd[link], motion.qdd[link]
             w, e = v[:, 2:3], a[:, 2:3]
-            jr = np.stack([-r[:, 1], r[:, 0]], axis=1)
+            jr = perpendicular(r)
             a_s = a[:, :2] + e * jr - w**2 * r
             f = mass * (gravity - a_s)
-            moment = r[:, 0] * f[:, 1] - r[:, 1] * f[:, 0] - inertia * e[:, 0]
+            moment = cross(r, f) - inertia * e[:, 0]
             add(link, f[:, 0], f[:, 1], moment)
     return out
 
@@ -199,7 +198,7 @@ def _reactions(parts, lam: np.ndarray, m) -> list:
     for eq, _, jb, r0 in parts:
         value = lam[:, r0 : r0 + eq.size]
         on_b = np.einsum("nij,ni->nj", jb, value)
-        point = m.pair(eq.pair).point if eq.pair else _hinge_at(m, eq.point)
+        point = equation_point(m, eq)
         if eq.kind == "HINGE":
             out.append((point, (eq.a, eq.b), "R", on_b[:, :2].copy(), np.zeros(n)))
         elif eq.kind == "ANGLE":
@@ -281,7 +280,7 @@ def _friction_loads(
         if found is None:
             continue
         _, (x, y), _, force, _ = found
-        size = np.hypot(force[:, 0], force[:, 1])
+        size = norm(force)
         wx, wy = motion.qd[x][:, 2], motion.qd[y][:, 2]
         if kind == "R":
             spin = np.sign(wy - wx)
@@ -293,13 +292,13 @@ def _friction_loads(
         c = np.array(m.coordinates(pair.point), dtype=float)  # type: ignore[arg-type]
         p_world, v_y, _ = motion.point(y, c)
         _, v_x, _ = motion.point(x, c)
-        u = rotate_many(motion.q[x][:, 2], np.array([math.cos(pair.angle), math.sin(pair.angle)]))
+        u = rotate_many(motion.q[x][:, 2], unit(pair.angle))
         slip = np.einsum("ni,ni->n", v_y - v_x, u)
         f = -(pair.friction or 0.0) * size[:, None] * np.sign(slip)[:, None] * u
         for link, sign in ((y, 1.0), (x, -1.0)):
             r = p_world - motion.q[link][:, :2]
             g = sign * f
-            add(link, np.column_stack([g, r[:, 0] * g[:, 1] - r[:, 1] * g[:, 0]]))
+            add(link, np.column_stack([g, cross(r, g)]))
         loss += (pair.friction or 0.0) * size * np.abs(slip)
     return loads, loss
 
@@ -307,6 +306,7 @@ def _friction_loads(
 def _forces_once(
     plan: SolvePlan, motion: Motion, minimum_norm: bool, extra: Mapping[str, np.ndarray]
 ) -> ForceSweep:
+    """One kinetostatic pass: groups from the last back, then the drivers; ``extra`` loads added."""
     redundant = [s.redundant_link for s in plan.steps if s.group is None]
     if redundant and not minimum_norm:
         raise IndeterminateError(
@@ -321,81 +321,119 @@ def _forces_once(
     carried: dict[str, np.ndarray] = {}
     reactions: list = []
     order: list[str] = []
-    zero3 = np.zeros((n, 3))
     for step in reversed(plan.steps):
-        links = step.links
-        index = {link: i for i, link in enumerate(links)}
-        rows = sum(eq.size for eq in step.equations)
-        jt = np.zeros((n, 3 * len(links), rows))
-        parts = []
-        r = 0
-        for eq in step.equations:
-            ja, jb = _parts(eq, motion)
-            parts.append((eq, ja, jb, r))
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link in index:
-                    k = 3 * index[link]
-                    jt[:, k : k + 3, r : r + eq.size] += np.transpose(part, (0, 2, 1))
-            r += eq.size
-        rhs = np.concatenate(
-            [-(applied.get(x, zero3) + carried.get(x, zero3)) for x in links], axis=1
-        )
-        if jt.shape[1] == jt.shape[2]:
-            lam = np.linalg.solve(jt, rhs[..., None])[..., 0]
-        else:
-            lam = (np.linalg.pinv(jt) @ rhs[..., None])[..., 0]
-        for eq, ja, jb, r0 in parts:
-            value = lam[:, r0 : r0 + eq.size]
-            for link, part in ((eq.a, ja), (eq.b, jb)):
-                if link not in index:
-                    carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
-        reactions.extend(_reactions(parts, lam, m))
+        reactions.extend(_group_reactions(step, motion, applied, carried, m))
         order.append(step.label)
     moments: dict[str, np.ndarray] = {}
     balancing_force = None
     balance = {x.link: x for x in m.loads if x.kind == "balance"}
     power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
     for d in plan.drivers:
-        link = d.link
-        total = applied.get(link, zero3) + carried.get(link, zero3)
-        parts = []
-        cols = []
-        r0 = 0
-        for eq in ground_equations(plan, link):
-            ja, jb = _parts(eq, motion)
-            parts.append((eq, ja, jb, r0))
-            cols.append(np.transpose(ja, (0, 2, 1)))
-            r0 += eq.size
-        load = balance.get(link)
-        if load is not None:
-            t = math.radians(load.values[0])
-            u = np.array([math.cos(t), math.sin(t)])
-            c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
-            rp = rotate_many(motion.q[link][:, 2], c)
-            drive = np.stack(
-                [np.full(n, u[0]), np.full(n, u[1]), rp[:, 0] * u[1] - rp[:, 1] * u[0]], axis=1
-            )
-        elif d.kind == "R":
-            drive = np.tile([0.0, 0.0, 1.0], (n, 1))
-        else:
-            drive = np.tile([d.direction[0], d.direction[1], 0.0], (n, 1))
-        jt = np.concatenate([*cols, drive[:, :, None]], axis=2)
-        lam = np.linalg.solve(jt, -total[..., None])[..., 0]
+        load = balance.get(d.link)
+        parts, lam, drive = _driver_balance(plan, motion, d, load, applied, carried)
         reactions.extend(_reactions(parts, lam[:, :-1], m))
         if load is not None:
-            balancing_force = lam[:, -1:] * u[None, :]
+            balancing_force = lam[:, -1:] * unit_from_degrees(load.values[0])[None, :]
         else:
-            moments[link] = lam[:, -1].copy()
-        power.append(lam[:, -1] * np.einsum("ni,ni->n", drive, motion.qd[link]))
-        order.append(f"I({link})")
+            moments[d.link] = lam[:, -1].copy()
+        power.append(lam[:, -1] * np.einsum("ni,ni->n", drive, motion.qd[d.link]))
+        order.append(f"I({d.link})")
     reactions.extend(_contact_forces(plan, reactions))
+    return ForceSweep(
+        motion.inputs, tuple(reactions), moments, balancing_force, _residual(power, n), tuple(order)
+    )
+
+
+def _group_reactions(
+    step: GroupStep,
+    motion: Motion,
+    applied: Mapping[str, np.ndarray],
+    carried: dict[str, np.ndarray],
+    m: Mechanism,
+) -> list:
+    """A group's reactions from its links' equilibrium, ``Jᵀ·λ = −Q``, at every pose.
+
+    ``Q`` holds the applied and inertia loads and what the groups solved before
+    (farther from the drivers) pass on; the group's reactions on its known
+    links are added to ``carried`` for the groups solved after it.
+    """
+    n = motion.inputs.shape[0]
+    zero3 = np.zeros((n, 3))
+    links = step.links
+    index = {link: i for i, link in enumerate(links)}
+    rows = sum(eq.size for eq in step.equations)
+    jt = np.zeros((n, 3 * len(links), rows))
+    parts = []
+    r = 0
+    for eq in step.equations:
+        ja, jb = _parts(eq, motion)
+        parts.append((eq, ja, jb, r))
+        for link, part in ((eq.a, ja), (eq.b, jb)):
+            if link in index:
+                k = 3 * index[link]
+                jt[:, k : k + 3, r : r + eq.size] += np.transpose(part, (0, 2, 1))
+        r += eq.size
+    rhs = np.concatenate([-(applied.get(x, zero3) + carried.get(x, zero3)) for x in links], axis=1)
+    if jt.shape[1] == jt.shape[2]:
+        lam = np.linalg.solve(jt, rhs[..., None])[..., 0]
+    else:
+        lam = (np.linalg.pinv(jt) @ rhs[..., None])[..., 0]
+    for eq, ja, jb, r0 in parts:
+        value = lam[:, r0 : r0 + eq.size]
+        for link, part in ((eq.a, ja), (eq.b, jb)):
+            if link not in index:
+                carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
+    return _reactions(parts, lam, m)
+
+
+def _driver_balance(
+    plan: SolvePlan,
+    motion: Motion,
+    driver: DriverStep,
+    load: Load | None,
+    applied: Mapping[str, np.ndarray],
+    carried: Mapping[str, np.ndarray],
+) -> tuple[list, np.ndarray, np.ndarray]:
+    """A driver's equilibrium: its ground pair's multipliers and the balancing load, last.
+
+    The balancing load is the motor's moment (or force along the slide), or
+    the force of a ``balance`` statement ``load`` along its direction.
+    Returns the equation parts, the multipliers (N, rows + 1) and the
+    generalized direction of the balancing load (N, 3).
+    """
+    m = plan.mechanism
+    n = motion.inputs.shape[0]
+    link = driver.link
+    zero3 = np.zeros((n, 3))
+    total = applied.get(link, zero3) + carried.get(link, zero3)
+    parts = []
+    cols = []
+    r0 = 0
+    for eq in ground_equations(plan, link):
+        ja, jb = _parts(eq, motion)
+        parts.append((eq, ja, jb, r0))
+        cols.append(np.transpose(ja, (0, 2, 1)))
+        r0 += eq.size
+    if load is not None:
+        u = unit_from_degrees(load.values[0])
+        c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
+        rp = rotate_many(motion.q[link][:, 2], c)
+        drive = np.stack([np.full(n, u[0]), np.full(n, u[1]), cross(rp, u)], axis=1)
+    elif driver.kind == "R":
+        drive = np.tile([0.0, 0.0, 1.0], (n, 1))
+    else:
+        drive = np.tile([driver.direction[0], driver.direction[1], 0.0], (n, 1))
+    jt = np.concatenate([*cols, drive[:, :, None]], axis=2)
+    lam = np.linalg.solve(jt, -total[..., None])[..., 0]
+    return parts, lam, drive
+
+
+def _residual(power: list[np.ndarray], n: int) -> np.ndarray:
+    """The virtual-power check: |Σ powers| relative to the largest term, at every pose."""
     terms = np.abs(np.array(power)) if power else np.zeros((1, n))
     scale = terms.max(axis=0)
     total_power = np.abs(np.sum(np.array(power), axis=0)) if power else np.zeros(n)
-    residual = np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
-    return ForceSweep(
-        motion.inputs, tuple(reactions), moments, balancing_force, residual, tuple(order)
-    )
+    return np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
 
 
 def solve_forces(
@@ -468,14 +506,10 @@ def ground_equations(plan: SolvePlan, link: str) -> list[Equation]:
         if p.other(link) != m.ground:
             continue
         c = np.array(m.coordinates(p.point), dtype=float) if p.point else np.zeros(2)
-        if p.kind.value == "R":
+        if p.kind is PairKind.R:
             return [Equation("HINGE", link, m.ground, c, pair=p.id)]
-        if p.kind.value == "P" and p.angle is not None:
-            u = np.array([math.cos(p.angle), math.sin(p.angle)])
-            return [
-                Equation("ANGLE", link, m.ground, pair=p.id),
-                Equation("SLIDE", link, m.ground, c, np.array([-u[1], u[0]]), p.id),
-            ]
+        if p.kind is PairKind.P and p.angle is not None:
+            return list(slide_equations(link, m.ground, c, unit(p.angle), p.id))
     for h in m.compound_hinges.values():
         if link in h.links and m.ground in h.links:
             c = np.array(m.coordinates(h.point), dtype=float)
@@ -504,7 +538,7 @@ def _two_contacts(
         (
             p
             for p in plan.mechanism.pairs
-            if p.kind.value == "P" and set(p.links) == set(links) and p.point == point
+            if p.kind is PairKind.P and set(p.links) == set(links) and p.point == point
         ),
         None,
     )
@@ -512,17 +546,17 @@ def _two_contacts(
         return None
     turned = next((x for x in pair.links if x in motion.q), None)  # the links keep one angle
     t = (pair.angle or 0.0) + (float(motion.q[turned][0, 2]) if turned is not None else 0.0)
-    u = np.array([math.cos(t), math.sin(t)])
-    norm = float(np.hypot(*force))
+    u = unit(t)
+    size = float(norm(force))
     half = pair.span / 2
-    if norm <= 1e-9 * (1.0 + abs(couple) / half):  # a pure couple: no direction of its own
-        norm, direction = 0.0, np.array([-u[1], u[0]])
+    if size <= 1e-9 * (1.0 + abs(couple) / half):  # a pure couple: no direction of its own
+        size, direction = 0.0, perpendicular(u)
     else:
-        direction = force / norm
-    side = float(u[0] * direction[1] - u[1] * direction[0])  # ±1: u × direction
+        direction = force / size
+    side = float(cross(u, direction))  # ±1: u × direction
     # N1 + N2 = |N|; the contacts at −half and +half along u give the moment C
-    n1 = (norm - couple / (half * side)) / 2
-    n2 = (norm + couple / (half * side)) / 2
+    n1 = (size - couple / (half * side)) / 2
+    n2 = (size + couple / (half * side)) / 2
     return n1 * direction, n2 * direction
 
 
@@ -539,11 +573,3 @@ def _contact_forces(plan: SolvePlan, reactions: list) -> list:
                 out.append((point, (a, b), "H", on_virtual.copy(), np.zeros(force.shape[0])))
                 break
     return out
-
-
-def _hinge_at(m, xy) -> str | None:
-    for h in m.compound_hinges.values():
-        p = m.points.get(h.point)
-        if p is not None and (p.x, p.y) == (float(xy[0]), float(xy[1])):
-            return h.point
-    return None

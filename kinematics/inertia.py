@@ -9,10 +9,8 @@ driver alone turning with the reduced moment of inertia, so
 The link motions come from the kinematics at each pose; the masses from the
 ``mass LINK m J S`` statements.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_poses
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan, solve_poses
 >>> m = parse_edgelist(["driver 1 omega=3", "0 1 R A", "point A 0 0", "point S 0.2 0",
 ...                     "mass 1 2 0.01 S"])
 >>> plan = make_plan(analyze(m))
@@ -27,7 +25,7 @@ import numpy as np
 from structure.errors import MechanismError, MobilityError
 
 from .plan import SolvePlan
-from .solve import Motion
+from .state import Motion
 
 __all__ = ["reduced_inertia_over"]
 

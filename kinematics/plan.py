@@ -5,8 +5,7 @@ lower-pair mechanism, drivers and Assur groups) and the sketch coordinates
 into what the solvers need: for each driver its pivot or slide, for each group
 its links and the equations of its pairs. Nothing is solved here.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
+>>> from structure import analyze, parse_edgelist
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 1", "point C 2 1", "point D 2 0"])
 >>> plan = make_plan(analyze(m))
@@ -16,7 +15,6 @@ its links and the equations of its pairs. Nothing is solved here.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -25,10 +23,12 @@ import numpy as np
 
 from structure.assur import AssurGroup
 from structure.errors import EdgeListError, EdgeListProblem, MechanismError
+from structure.meshes import meshes
 from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
-from .equations import Equation
+from .equations import Equation, slide_equations
+from .planar import unit_from_degrees
 
 __all__ = ["DriverStep", "GroupStep", "SolvePlan", "make_plan"]
 
@@ -113,11 +113,6 @@ def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.
     return np.array(xy, dtype=float)
 
 
-def _unit(angle_deg: float | None) -> np.ndarray:
-    t = math.radians(angle_deg or 0.0)
-    return np.array([math.cos(t), math.sin(t)])
-
-
 def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     """The solve plan of a structural report whose mechanism has sketch coordinates.
 
@@ -133,72 +128,88 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     """
     m = report.replaced
     problems: list[EdgeListProblem] = []
-    drivers: list[DriverStep] = []
     motion = {d.link: dict(d.motion) for d in report.mechanism.drivers}
-    for link in report.drivers:
-        values = motion.get(link, {})
-        joint = m.ground_joint(link)
-        if joint.kind is PairKind.R:
-            point = joint.point
-            pivot = _xy(m, point, f"driver {link}'s pivot", problems)
-            speed, acc = values.get("omega"), values.get("epsilon", 0.0)
-            drivers.append(
-                DriverStep(
-                    link, "R", pivot, np.zeros(2), speed or 0.0, acc, speed is not None, point
-                )
-            )
-            continue
-        p_pair = joint.pair
-        if p_pair.angle_deg is None:
-            problems.append(EdgeListProblem(p_pair.line_no, p_pair.statement, "needs angle="))
-        direction = _unit(p_pair.angle_deg)  # v > 0 moves the driver along angle=
-        speed, acc = values.get("v"), values.get("a", 0.0)
-        drivers.append(
-            DriverStep(
-                link,
-                "P",
-                np.zeros(2),
-                direction,
-                speed or 0.0,
-                acc,
-                speed is not None,
-                p_pair.point,
-            )
-        )
-    steps: list[GroupStep] = []
-    for group in report.groups:
-        equations: list[Equation] = []
-        for gp in group.pairs:
-            a, b = gp.links
-            if gp.kind is PairKind.R:
-                c = _xy(m, gp.point, f"pair {a}–{b} R", problems)
-                equations.append(Equation("HINGE", a, b, c, pair=gp.pair))
-                continue
-            pair = m.pair(gp.pair)
-            if pair.angle_deg is None:
-                problems.append(EdgeListProblem(pair.line_no, pair.statement, "needs angle="))
-            u = _unit(pair.angle_deg)
-            c = _xy(m, gp.point, f"pair {pair.label}", problems)
-            equations.append(Equation("ANGLE", a, b, pair=pair.id))
-            equations.append(Equation("SLIDE", a, b, c, np.array([-u[1], u[0]]), pair.id))
-        steps.append(GroupStep(group, tuple(equations)))
-    for link in report.decomposition.removed_links:
-        equations = []
-        for pair in m.pairs_of(link):
-            other = pair.other(link)
-            if pair.kind is PairKind.R:
-                c = _xy(m, pair.point, f"pair {pair.label}", problems)
-                equations.append(Equation("HINGE", link, other, c, pair=pair.id))
-            elif pair.kind is PairKind.P:
-                u = _unit(pair.angle_deg)
-                c = _xy(m, pair.point, f"pair {pair.label}", problems)
-                equations.append(Equation("ANGLE", link, other, pair=pair.id))
-                equations.append(
-                    Equation("SLIDE", link, other, c, np.array([-u[1], u[0]]), pair.id)
-                )
-        steps.append(GroupStep(None, tuple(equations), link))
+    drivers = tuple(
+        _driver_step(m, link, motion.get(link, {}), problems) for link in report.drivers
+    )
+    steps = [GroupStep(group, _group_equations(m, group, problems)) for group in report.groups]
+    steps += [
+        GroupStep(None, _redundant_equations(m, link, problems), link)
+        for link in report.decomposition.removed_links
+    ]
     if problems:
         raise EdgeListError(m.source, problems)
+    _check_flip(steps, flip)
+    return SolvePlan(
+        m,
+        drivers,
+        tuple(steps),
+        MappingProxyType(_points(m)),
+        _sketch_size(m),
+        frozenset(flip),
+        tuple(r.pair.label for r in report.replacements),
+        _contacts(report),
+        _rolling_steps(report, steps) if report.replacements else None,
+    )
+
+
+def _driver_step(
+    m: Mechanism, link: str, values: Mapping[str, float], problems: list
+) -> DriverStep:
+    """A driver's pivot (turning about the ground) or slide (along it), speed and acceleration."""
+    joint = m.ground_joint(link)
+    if joint.kind is PairKind.R:
+        point = joint.point
+        pivot = _xy(m, point, f"driver {link}'s pivot", problems)
+        speed, acc = values.get("omega"), values.get("epsilon", 0.0)
+        return DriverStep(
+            link, "R", pivot, np.zeros(2), speed or 0.0, acc, speed is not None, point
+        )
+    p_pair = joint.pair
+    if p_pair.angle_deg is None:
+        problems.append(EdgeListProblem(p_pair.line_no, p_pair.statement, "needs angle="))
+    direction = unit_from_degrees(p_pair.angle_deg)  # v > 0 moves the driver along angle=
+    speed, acc = values.get("v"), values.get("a", 0.0)
+    return DriverStep(
+        link, "P", np.zeros(2), direction, speed or 0.0, acc, speed is not None, p_pair.point
+    )
+
+
+def _group_equations(m: Mechanism, group: AssurGroup, problems: list) -> tuple[Equation, ...]:
+    """The equations of an Assur group's pairs (inner and outer), in the group's pair order."""
+    equations: list[Equation] = []
+    for gp in group.pairs:
+        a, b = gp.links
+        if gp.kind is PairKind.R:
+            c = _xy(m, gp.point, f"pair {a}–{b} R", problems)
+            equations.append(Equation("HINGE", a, b, c, pair=gp.pair))
+            continue
+        pair = m.pair(gp.pair)
+        if pair.angle_deg is None:
+            problems.append(EdgeListProblem(pair.line_no, pair.statement, "needs angle="))
+        u = unit_from_degrees(pair.angle_deg)
+        c = _xy(m, gp.point, f"pair {pair.label}", problems)
+        equations.extend(slide_equations(a, b, c, u, pair.id))
+    return tuple(equations)
+
+
+def _redundant_equations(m: Mechanism, link: str, problems: list) -> tuple[Equation, ...]:
+    """The equations of every pair of a link set aside as redundant."""
+    equations: list[Equation] = []
+    for pair in m.pairs_of(link):
+        other = pair.other(link)
+        if pair.kind is PairKind.R:
+            c = _xy(m, pair.point, f"pair {pair.label}", problems)
+            equations.append(Equation("HINGE", link, other, c, pair=pair.id))
+        elif pair.kind is PairKind.P:
+            u = unit_from_degrees(pair.angle_deg)
+            c = _xy(m, pair.point, f"pair {pair.label}", problems)
+            equations.extend(slide_equations(link, other, c, u, pair.id))
+    return tuple(equations)
+
+
+def _points(m: Mechanism) -> dict[str, tuple[str, np.ndarray]]:
+    """Every named point with coordinates, and the link that carries it."""
     points: dict[str, tuple[str, np.ndarray]] = {}
     for h in m.hinges:
         xy = m.coordinates(h.point)
@@ -215,33 +226,35 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     for pt in m.points.values():
         if pt.on is not None:
             points[pt.name] = (pt.on, np.array([pt.x, pt.y]))
+    return points
+
+
+def _sketch_size(m: Mechanism) -> float:
+    """The sketch's extent (the larger of its width and height; 1 for a single point)."""
     coords = np.array([[p.x, p.y] for p in m.points.values()]) if m.points else np.zeros((1, 2))
     span = float(np.max(np.ptp(coords, axis=0))) if len(coords) > 1 else 1.0
-    rolling = _rolling_steps(report, steps) if report.replacements else None
+    return span if span > 0 else 1.0
+
+
+def _check_flip(steps: list[GroupStep], flip: Iterable[str]) -> None:
     dyads = {s.label for s in steps if s.group is not None and s.group.kind is not None}
     unknown = set(flip) - dyads
     if unknown:
         raise ValueError(
             f"cannot flip {', '.join(sorted(unknown))}: the dyads are {', '.join(sorted(dyads))}"
         )
-    return SolvePlan(
-        m,
-        tuple(drivers),
-        tuple(steps),
-        MappingProxyType(points),
-        span if span > 0 else 1.0,
-        frozenset(flip),
-        tuple(r.pair.label for r in report.replacements),
-        tuple(
-            (
-                r.virtual_link,
-                r.new_pairs[0].other(r.virtual_link),
-                r.new_pairs[1].other(r.virtual_link),
-                r.pair.point,
-            )
-            for r in report.replacements
-        ),
-        rolling,
+
+
+def _contacts(report: StructuralReport) -> tuple[tuple[str, str, str, str | None], ...]:
+    """Each replaced higher pair: its virtual link, the two links it joins, its contact point."""
+    return tuple(
+        (
+            r.virtual_link,
+            r.new_pairs[0].other(r.virtual_link),
+            r.new_pairs[1].other(r.virtual_link),
+            r.pair.point,
+        )
+        for r in report.replacements
     )
 
 
@@ -252,8 +265,6 @@ def _rolling_steps(
 
     None when a higher pair is not a gear mesh with both tooth numbers.
     """
-    from .gears.trains import meshes  # gears imports sympy; only mechanisms with meshes need it
-
     try:
         found = {mesh.pair.id: mesh for mesh in meshes(report.mechanism)}
     except MechanismError:  # a mesh without a carrier: only the sketch pose can be solved

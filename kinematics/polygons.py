@@ -23,10 +23,8 @@ closes. Groups that are not dyads (triads and higher) have no such equations.
 The notation is :mod:`kinematics.explain`'s: the point of link 3 at B is
 ``B3`` (:func:`point_label`).
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_pose
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan, solve_pose
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 0.1", "point C 0.4 0.1", "point D 0.4 -0.3"])
 >>> plan = make_plan(analyze(m)); state = solve_pose(plan)
@@ -37,7 +35,6 @@ The notation is :mod:`kinematics.explain`'s: the point of link 3 at B is
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,9 +42,9 @@ import numpy as np
 from structure.assur import AssurGroup, GroupPair
 from structure.model import PairKind
 
-from .equations import rotate
 from .plan import SolvePlan
-from .solve import KinematicState
+from .planar import cross, norm, perpendicular, rotate, unit
+from .state import KinematicState
 
 __all__ = [
     "Chain",
@@ -68,19 +65,6 @@ __all__ = [
 ]
 
 
-def _j(v: np.ndarray) -> np.ndarray:
-    """``v`` turned by +90°."""
-    return np.array([-v[1], v[0]])
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> float:
-    return float(a[0] * b[1] - a[1] * b[0])
-
-
-def _norm(v: np.ndarray) -> float:
-    return float(np.hypot(v[0], v[1]))
-
-
 # ---------------------------------------------------------------- motion of a link's points
 
 
@@ -97,7 +81,7 @@ def link_rates(
 
 def _motion(qd: np.ndarray, qdd: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Velocity and acceleration of a link's point at ``r`` (world axes) from the link's origin."""
-    jr = _j(r)
+    jr = perpendicular(r)
     return qd[:2] + qd[2] * jr, qdd[:2] + qdd[2] * jr - qd[2] ** 2 * r
 
 
@@ -124,14 +108,13 @@ def slide_angle(plan: SolvePlan, state: KinematicState, pair_id: int) -> float:
     The angle is the pair's ``angle=`` plus the turn of its moving link (of
     the first link when neither is the ground).
 
-    >>> from structure import parse_edgelist
-    >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
-    >>> from kinematics.solve import solve_pose
+    >>> from structure import analyze, parse_edgelist
+    >>> from kinematics import make_plan, solve_pose
     >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "1 2 R B", "2 3 R C",
     ...                     "3 0 P C angle=30", "point A 0 0", "point B 0 0.1", "point C 0.3 0"])
     >>> plan = make_plan(analyze(m)); state = solve_pose(plan)
     >>> (pid,) = [p.id for p in m.pairs if p.kind.value == "P"]
+    >>> import math
     >>> round(math.degrees(slide_angle(plan, state, pid)), 9), slide_direction(plan, state, pid)
     (30.0, array([0.8660254, 0.5      ]))
     """
@@ -144,7 +127,7 @@ def slide_angle(plan: SolvePlan, state: KinematicState, pair_id: int) -> float:
 def slide_direction(plan: SolvePlan, state: KinematicState, pair_id: int) -> np.ndarray:
     """Unit direction of the slide of P pair ``pair_id`` at the pose (its ``angle=`` turned)."""
     theta = slide_angle(plan, state, pair_id)
-    return np.array([math.cos(theta), math.sin(theta)])
+    return unit(theta)
 
 
 # ---------------------------------------------------------------- the dyad's ways to X
@@ -257,7 +240,7 @@ def dyad_of(plan: SolvePlan, state: KinematicState, group: AssurGroup | None) ->
 
         def off_line(link: str) -> float:
             pin = point_at(plan, state, ext[link].links[1], ext[link].point or "")[0]
-            return abs(_cross(u, pin - s))
+            return abs(float(cross(u, pin - s)))
 
         la = min(pinned, key=off_line)  # the block: its pin on the slide line if either is
         lb = group.links[1] if la == group.links[0] else group.links[0]
@@ -267,7 +250,7 @@ def dyad_of(plan: SolvePlan, state: KinematicState, group: AssurGroup | None) ->
             Side("P", lb, ext[la].links[1], guide_link=la, pair=mid.pair),
         )
         d = Dyad(x, point_at(plan, state, la, x)[0], lb, sides, la, group.links)
-    if any(side.kind == "R" and _norm(_arm(plan, state, d, side)) <= 1e-12 for side in d.sides):
+    if any(side.kind == "R" and norm(_arm(plan, state, d, side)) <= 1e-12 for side in d.sides):
         return None
     return d
 
@@ -343,7 +326,7 @@ def coriolis(
         point_motion(plan, state, side.link, d.where)[0]
         - point_motion(plan, state, side.guide_link, d.where)[0]
     )
-    return wg, vrel, 2.0 * wg * _j(vrel)
+    return wg, vrel, 2.0 * wg * perpendicular(vrel)
 
 
 def _chain(plan: SolvePlan, state: KinematicState, d: Dyad, side: Side, order: int) -> Chain:
@@ -355,9 +338,9 @@ def _chain(plan: SolvePlan, state: KinematicState, d: Dyad, side: Side, order: i
         _, qd, qdd = link_rates(plan, state, side.link)
         w, e = float(qd[2]), float(qdd[2])
         if order == 1:
-            terms = (Term("v", "", sub, w * _j(r)),)
+            terms = (Term("v", "", sub, w * perpendicular(r)),)
         else:
-            terms = (Term("a", "n", sub, -w * w * r), Term("a", "τ", sub, e * _j(r)))
+            terms = (Term("a", "n", sub, -w * w * r), Term("a", "τ", sub, e * perpendicular(r)))
         return Chain(side, side.base, side.link, where, origin, terms)
     own = point_motion(plan, state, side.link, d.where)[order - 1]
     origin = point_motion(plan, state, side.guide_link, d.where)[order - 1]

@@ -1,9 +1,7 @@
 """Kinematic results as plain data (JSON-ready dicts), SI units and radians.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_pose
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan, solve_pose
 >>> m = parse_edgelist(["driver 1 omega=2", "0 1 R A", "point A 0 0"])
 >>> state_to_dict(solve_pose(make_plan(analyze(m))))["links"]["1"]["omega"]
 2.0
@@ -11,16 +9,18 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from .exact import ExactForces, ExactState
-from .forces import ForceSolution
-from .solve import KinematicState
+if TYPE_CHECKING:  # annotations only: importing the exact solver would import sympy
+    from .exact import ExactForces, ExactState
+    from .forces import ForceSolution
+    from .state import KinematicState
 
 __all__ = ["exact_forces_to_dict", "exact_to_dict", "forces_to_dict", "state_to_dict"]
 
 
 def _both(x: Any) -> dict[str, Any]:
+    """An exact value (a sympy expression) as its text and its float."""
     return {"value": str(x), "float": float(x)}
 
 
@@ -91,19 +91,15 @@ def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
 
 def exact_to_dict(state: ExactState) -> dict[str, Any]:
     """Exact values as ``{"value": "50*sqrt(3)", "float": 86.60...}`` pairs."""
-
-    def both(x: Any) -> dict[str, Any]:
-        return {"value": str(x), "float": float(x)}
-
     return {
         "links": {
-            name: {"omega": both(v["omega"]), "epsilon": both(v["epsilon"])}
+            name: {"omega": _both(v["omega"]), "epsilon": _both(v["epsilon"])}
             for name, v in state.links.items()
         },
         "points": {
             name: {
-                "velocity": [both(x) for x in v["velocity"]],
-                "acceleration": [both(x) for x in v["acceleration"]],
+                "velocity": [_both(x) for x in v["velocity"]],
+                "acceleration": [_both(x) for x in v["acceleration"]],
             }
             for name, v in state.points.items()
         },

@@ -5,9 +5,8 @@ sketch is kept by continuity; a pose that cannot be assembled or a dead centre
 stops the sweep with the error naming the group and the input, never a NaN.
 Results are numpy arrays, one row per pose, ready to plot or export.
 
->>> from structure import parse_edgelist
->>> from structure.report import analyze
->>> from kinematics.plan import make_plan
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0.1 0", "point C 0.3 0.3", "point D 0.4 0"])
 >>> s = sweep(make_plan(analyze(m)), steps=8)
@@ -29,6 +28,7 @@ from structure.errors import EdgeListError, EdgeListProblem
 
 from .forces import forces_over
 from .plan import SolvePlan
+from .planar import cross, norm, units
 from .solve import solve_poses
 
 __all__ = ["Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"]
@@ -91,13 +91,13 @@ def transmission_angle(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> float:
     90.0
     """
     u, v = c - b, c - d
-    cos = float(u @ v) / (float(np.hypot(*u)) * float(np.hypot(*v)))
+    cos = float(u @ v) / (float(norm(u)) * float(norm(v)))
     return math.acos(max(-1.0, min(1.0, cos)))
 
 
 def _angles(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
     u, v = c - b, c - d
-    cos = np.einsum("ij,ij->i", u, v) / (np.hypot(u[:, 0], u[:, 1]) * np.hypot(v[:, 0], v[:, 1]))
+    cos = np.einsum("ij,ij->i", u, v) / (norm(u) * norm(v))
     return np.arccos(np.clip(cos, -1.0, 1.0))
 
 
@@ -176,7 +176,7 @@ def _slide_direction(plan: SolvePlan, motion, pair_id: int, link: str) -> np.nda
     if pair.angle is None:
         return None
     theta = motion.q[link][:, 2] if link in motion.q else np.zeros(len(motion.inputs))
-    return np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
+    return units(pair.angle + theta)
 
 
 def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
@@ -210,8 +210,8 @@ def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.nda
         dirs = [_slide_direction(plan, motion, p.pair, p.links[0]) for p in slides]
         if any(d is None for d in dirs):
             continue
-        cross = np.abs(dirs[0][:, 0] * dirs[1][:, 1] - dirs[0][:, 1] * dirs[1][:, 0])
-        out[g.label] = np.arcsin(np.clip(cross, 0.0, 1.0))
+        sine = np.abs(cross(dirs[0], dirs[1]))
+        out[g.label] = np.arcsin(np.clip(sine, 0.0, 1.0))
     return out
 
 
@@ -237,9 +237,9 @@ def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
             continue
         guide = slide[0].links[1]
         theta = motion.q[guide][:, 2] if guide in motion.q else np.zeros(len(motion.inputs))
-        u = np.stack([np.cos(pair.angle + theta), np.sin(pair.angle + theta)], axis=1)
+        u = units(pair.angle + theta)
         rod = points[mid.point]["position"] - points[rod_pin[0].point]["position"]
-        along = np.abs(np.einsum("ij,ij->i", rod, u)) / np.hypot(rod[:, 0], rod[:, 1])
+        along = np.abs(np.einsum("ij,ij->i", rod, u)) / norm(rod)
         out[g.label] = np.arcsin(np.clip(along, 0.0, 1.0))
     return out
 
@@ -253,9 +253,8 @@ def parse_inputs(lines, plan: SolvePlan, source: str = "<inputs>") -> np.ndarray
     sets the column order; without it the columns follow the drivers' order.
     Every bad line is reported, with its number.
 
-    >>> from structure import parse_edgelist
-    >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
+    >>> from structure import analyze, parse_edgelist
+    >>> from kinematics import make_plan
     >>> plan = make_plan(analyze(parse_edgelist(["driver 1", "0 1 R A", "point A 0 0"])))
     >>> parse_inputs(["# crank angle", "0", "90"], plan).round(6).tolist()
     [[0.0], [1.570796]]

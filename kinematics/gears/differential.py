@@ -67,6 +67,22 @@ the case torque nor any radius used in eqs. (21)-(24)):
   radius ``r_b`` of eq. (22) (``r_b = 1 m`` in effect) and subtracts them from
   the half-shaft torques as in its eqs. (2)-(3).
 
+Without friction the split is even, with it the slower side gets more:
+
+>>> s = bevel_differential_split(1000.0, side_radius=0.05, planet_radius=0.025,
+...                              planet_friction=0.0, side_friction=0.0, faster="left")
+>>> s.torque_left, s.torque_right, s.bias_ratio
+(500.0, 500.0, 1.0)
+>>> s = bevel_differential_split(1000.0, side_radius=0.05, planet_radius=0.025,
+...                              planet_friction=2.0, side_friction=10.0,
+...                              faster="left", n_planets=2)
+>>> round(s.force_left, 6), round(s.force_right, 6)
+(9920.0, 10080.0)
+>>> round(s.torque_left, 6), round(s.torque_right, 6), round(s.bias_ratio, 6)
+(486.0, 514.0, 1.057613)
+
+The paper's worked example, with the inputs inferred above:
+
 >>> r_s = 1637.7208 / 14000          # inferred side-gear radius, m
 >>> r_p = 7.0 * r_s / 23.279         # inferred planet radius, m
 >>> s = bevel_differential_split(1637.7208, side_radius=r_s, planet_radius=r_p,
@@ -91,6 +107,7 @@ __all__ = ["DifferentialSplit", "bevel_differential_split"]
 
 Side = Literal["left", "right"]
 SideFrictionModel = Literal["relative", "paper"]
+_MODELS = ("relative", "paper")
 
 
 @dataclass(frozen=True)
@@ -214,52 +231,76 @@ def bevel_differential_split(
 
     Examples
     --------
-    Without friction the split is even, with it the slower side gets more:
-
-    >>> s = bevel_differential_split(1000.0, side_radius=0.05, planet_radius=0.025,
-    ...                              planet_friction=0.0, side_friction=0.0, faster="left")
-    >>> s.torque_left, s.torque_right, s.bias_ratio
-    (500.0, 500.0, 1.0)
-    >>> s = bevel_differential_split(1000.0, side_radius=0.05, planet_radius=0.025,
-    ...                              planet_friction=2.0, side_friction=10.0,
-    ...                              faster="left", n_planets=2)
-    >>> round(s.force_left, 6), round(s.force_right, 6)
-    (9920.0, 10080.0)
-    >>> round(s.torque_left, 6), round(s.torque_right, 6), round(s.bias_ratio, 6)
-    (486.0, 514.0, 1.057613)
+    In the module's docstring: an even split without friction, more torque to
+    the slower side with it, and the paper's worked example.
     """
-    m_case = _finite("case_torque", case_torque)
-    r_s = _positive("side_radius", side_radius)
-    r_p = _positive("planet_radius", planet_radius)
-    m_p = _non_negative("planet_friction", planet_friction)
-    m_sc = _non_negative("side_friction", side_friction)
+    given = _Given(
+        case_torque=_finite("case_torque", case_torque),
+        side_radius=_positive("side_radius", side_radius),
+        planet_radius=_positive("planet_radius", planet_radius),
+        planet_friction=_non_negative("planet_friction", planet_friction),
+        side_friction=_non_negative("side_friction", side_friction),
+        n_planets=_planets(n_planets),
+        faster=_choice("faster", faster, ("left", "right")),
+        side_friction_model=_choice("side_friction_model", side_friction_model, _MODELS),
+        resistance_torques=_resistance(resistance_torques),
+    )
+    return _split(given)
+
+
+@dataclass(frozen=True)
+class _Given:
+    """The inputs of :func:`bevel_differential_split`, checked and converted."""
+
+    case_torque: float
+    side_radius: float
+    planet_radius: float
+    planet_friction: float
+    side_friction: float
+    n_planets: int
+    faster: Side
+    side_friction_model: SideFrictionModel
+    resistance_torques: tuple[float, float]
+
+
+def _planets(n_planets: object) -> int:
     if isinstance(n_planets, bool) or not isinstance(n_planets, Integral) or n_planets < 1:
         raise ValueError(f"n_planets must be an integer >= 1, got {n_planets!r}")
-    if faster not in ("left", "right"):
-        raise ValueError(f"faster must be 'left' or 'right', got {faster!r}")
-    if side_friction_model not in ("relative", "paper"):
-        raise ValueError(
-            f"side_friction_model must be 'relative' or 'paper', got {side_friction_model!r}"
-        )
+    return int(n_planets)
+
+
+def _resistance(resistance_torques: tuple[float, float]) -> tuple[float, float]:
     if len(resistance_torques) != 2:
         raise ValueError(f"resistance_torques must be a pair, got {resistance_torques!r}")
-    mc_left = _finite("resistance_torques[0]", resistance_torques[0])
-    mc_right = _finite("resistance_torques[1]", resistance_torques[1])
+    return (
+        _finite("resistance_torques[0]", resistance_torques[0]),
+        _finite("resistance_torques[1]", resistance_torques[1]),
+    )
 
-    n = int(n_planets)
-    f_t2 = m_case / r_s
+
+def _choice(name: str, value: str, options: tuple[str, ...]) -> str:
+    if value not in options:
+        raise ValueError(f"{name} must be {' or '.join(map(repr, options))}, got {value!r}")
+    return value
+
+
+def _split(given: _Given) -> DifferentialSplit:
+    """The moment balances of the planets and the side gears (see the module's equations)."""
+    r_s, m_sc = given.side_radius, given.side_friction
+    f_t2 = given.case_torque / r_s
     # planet moment balance: (F_slow - F_fast)·r_p = M_p on each of the n planets
-    shift = n * m_p / (2.0 * r_p)
+    shift = given.n_planets * given.planet_friction / (2.0 * given.planet_radius)
     f_fast = f_t2 / 2.0 - shift
     f_slow = f_t2 / 2.0 + shift
     # side gears about the axle; the case brakes the faster side gear
-    m_sc_slow = m_sc if side_friction_model == "relative" else -m_sc
-    mc_fast, mc_slow = (mc_left, mc_right) if faster == "left" else (mc_right, mc_left)
+    m_sc_slow = m_sc if given.side_friction_model == "relative" else -m_sc
+    mc_left, mc_right = given.resistance_torques
+    mc_fast, mc_slow = (mc_left, mc_right) if given.faster == "left" else (mc_right, mc_left)
     t_fast = f_fast * r_s - m_sc - mc_fast
     t_slow = f_slow * r_s + m_sc_slow - mc_slow
     bias = t_slow / t_fast if t_fast != 0 else math.inf
 
-    if faster == "left":
+    if given.faster == "left":
         f_left, f_right, t_left, t_right = f_fast, f_slow, t_fast, t_slow
     else:
         f_left, f_right, t_left, t_right = f_slow, f_fast, t_slow, t_fast
@@ -270,5 +311,5 @@ def bevel_differential_split(
         torque_left=t_left,
         torque_right=t_right,
         bias_ratio=bias,
-        faster=faster,
+        faster=given.faster,
     )

@@ -1,10 +1,8 @@
-"""Gear trains in the kinematic graph: meshes, carriers, Willis relations, exact speed ratios.
+"""Gear trains: Willis relations, exact speed ratios, reduced inertia, forces and losses.
 
-A gear mesh is a higher pair marked ``gear`` with its tooth numbers
-(``2 3 H gear z=25,105 internal=3``). Its carrier is the link that holds both
-gear axes: the link joined by revolute pairs (directly or through a shared
-pin) to both gears; for an ordinary pair on fixed axes that is the ground.
-Each mesh gives one Willis relation in the carrier's frame,
+The meshes and their carriers come from :mod:`structure.meshes` (``Mesh`` and
+``meshes`` stay importable from here). Each mesh gives one Willis relation in
+the carrier's frame,
 
     z_a·(ω_a − ω_c) = ∓ z_b·(ω_b − ω_c)   (− external, + internal teeth),
 
@@ -32,8 +30,11 @@ import numpy as np
 import sympy
 
 from structure.errors import MechanismError, MobilityError
-from structure.model import Mechanism, Pair, PairKind
+from structure.meshes import Mesh, is_planet, meshes
+from structure.model import Mechanism
 
+# Mesh and meshes (the topology of the meshes) are defined in structure.meshes; they stay
+# importable from here
 __all__ = [
     "Mesh",
     "TrainForces",
@@ -46,19 +47,6 @@ __all__ = [
     "train_forces",
     "train_losses",
 ]
-
-
-@dataclass(frozen=True)
-class Mesh:
-    """A gear mesh between links ``a`` and ``b`` with its carrier."""
-
-    pair: Pair
-    a: str
-    b: str
-    za: int | None
-    zb: int | None
-    carrier: str
-    internal: bool
 
 
 @dataclass(frozen=True)
@@ -77,66 +65,13 @@ class TrainRatios:
     teeth_found: Mapping[tuple[int, int], int]
 
 
-def _joined(m: Mechanism) -> dict[str, set[str]]:
-    """Links joined by a revolute pair (or a shared pin point) to each link."""
-    out: dict[str, set[str]] = {link: set() for link in m.links}
-    for p in m.pairs:
-        if p.kind is PairKind.R:
-            out[p.a].add(p.b)
-            out[p.b].add(p.a)
-    for h in m.hinges:
-        for x in h.links:
-            out[x].update(y for y in h.links if y != x)
-    return out
-
-
-def meshes(mechanism: Mechanism) -> tuple[Mesh, ...]:
-    """The gear meshes of ``mechanism`` with their carriers.
-
-    Raises
-    ------
-    MechanismError
-        A mesh whose carrier cannot be found (the gears' axes are on no common link)
-        or is ambiguous.
-    """
-    joined = _joined(mechanism)
-    out = []
-    for p in mechanism.pairs:
-        if not p.gear:
-            continue
-        a, b = p.a, p.b
-        # a gear's axis is fixed in the links it is pinned to (and in itself)
-        carriers = (joined[a] | {a}) & (joined[b] | {b})
-        if len(carriers) != 1:
-            raise MechanismError(
-                f"{mechanism.source}: line {p.line_no}: the gear mesh {p.label} has "
-                + (
-                    "no carrier: its gears' axes are on no common link"
-                    if not carriers
-                    else f"several possible carriers ({', '.join(sorted(carriers))})"
-                )
-            )
-        za, zb = p.teeth if p.teeth is not None else (None, None)
-        out.append(Mesh(p, a, b, za, zb, carriers.pop(), p.internal is not None))
-    return tuple(out)
-
-
 def _coaxial_teeth(mechanism: Mechanism, found: list[Mesh]) -> dict[tuple[int, int], int]:
     """Unknown tooth numbers from equal centre distances of each planet's meshes."""
     solved: dict[tuple[int, int], int] = {}
-    ground = mechanism.ground
-
-    def is_planet(gear: str, carrier: str) -> bool:
-        # pinned to a moving carrier off the carrier's own axis (a pin without the ground)
-        return carrier != ground and any(
-            gear in h.links and carrier in h.links and ground not in h.links
-            for h in mechanism.hinges
-        )
-
     by_planet: dict[tuple[str, str], list[Mesh]] = {}
     for mesh in found:
         for planet in (mesh.a, mesh.b):
-            if planet != mesh.carrier and is_planet(planet, mesh.carrier):
+            if planet != mesh.carrier and is_planet(mechanism, planet, mesh.carrier):
                 by_planet.setdefault((planet, mesh.carrier), []).append(mesh)
     for (planet, _), group in by_planet.items():
         symbols = {}
@@ -306,10 +241,7 @@ def _planet_arms(
         if carrier == ground:
             continue
         for planet in (mesh.a, mesh.b):
-            if planet == ground or not any(
-                planet in h.links and carrier in h.links and ground not in h.links
-                for h in mechanism.hinges
-            ):
+            if not is_planet(mechanism, planet, carrier):
                 continue
             za = mesh.za if mesh.za is not None else ratios.teeth_found.get((mesh.pair.id, 1))
             zb = mesh.zb if mesh.zb is not None else ratios.teeth_found.get((mesh.pair.id, 2))
@@ -363,82 +295,23 @@ def train_forces(
     """
     if len(ratios.inputs) != 1:
         raise MobilityError("the force balance needs a single input")
-    ground = mechanism.ground
     carriers = {mesh.carrier for mesh in ratios.meshes}
-    if len(carriers) != 1 or ground in carriers:
+    if len(carriers) != 1 or mechanism.ground in carriers:
         raise MechanismError(
             "the planet force balance covers planetary trains with one moving carrier"
         )
     (carrier,) = carriers
-
-    def planet_of(mesh: Mesh) -> str | None:
-        for x in (mesh.a, mesh.b):
-            if x != ground and any(
-                x in h.links and carrier in h.links and ground not in h.links
-                for h in mechanism.hinges
-            ):
-                return x
-        return None
-
-    teeth = {}
-    for mesh in ratios.meshes:
-        za = mesh.za if mesh.za is not None else ratios.teeth_found[(mesh.pair.id, 1)]
-        zb = mesh.zb if mesh.zb is not None else ratios.teeth_found[(mesh.pair.id, 2)]
-        if mesh.pair.module is None:
-            raise MechanismError(f"the gear mesh {mesh.pair.label} needs module= for forces")
-        teeth[mesh.pair.id] = (za, zb, mesh.pair.module)
-    arm: dict[str, float] = {}
-    place: dict[int, float] = {}  # x of each mesh
-    for mesh in ratios.meshes:
-        planet = planet_of(mesh)
-        if planet is None:
-            raise MechanismError(f"the mesh {mesh.pair.label} joins no planet of carrier {carrier}")
-        za, zb, module = teeth[mesh.pair.id]
-        z_planet, z_central = (za, zb) if mesh.a == planet else (zb, za)
-        r_central = module * z_central / 2
-        r_planet = module * z_planet / 2
-        place[mesh.pair.id] = r_central
-        radius = r_central - r_planet if mesh.internal else r_central + r_planet
-        if planet in arm and not math.isclose(arm[planet], radius, rel_tol=1e-9):
-            raise MechanismError(f"the meshes of planet {planet} are not coaxial")
-        arm[planet] = radius
-    unknowns = [mesh.pair.id for mesh in ratios.meshes]
-    moving = sorted(
-        {x for mesh in ratios.meshes for x in (mesh.a, mesh.b)} - {ground} | {carrier},
-        key=mechanism.links.index,
-    )
-    size = len(unknowns) + 1
-    rows: list[list[float]] = []
-    rhs: list[float] = []
-    external = {x.link: x.values[0] for x in mechanism.loads if x.kind == "moment"}
-    for link in moving:
-        row = [0.0] * size
-        for k, mesh in enumerate(ratios.meshes):
-            x = place[mesh.pair.id]
-            if link == carrier:
-                planet = planet_of(mesh)
-                # force on the planet from this mesh, passed to the carrier through the pin
-                sign = 1.0 if mesh.b == planet else -1.0
-                row[k] += arm[planet] * sign
-                continue
-            if link not in (mesh.a, mesh.b):
-                continue
-            sign = 1.0 if link == mesh.b else -1.0
-            lever = x - arm[link] if link in arm else x
-            row[k] += lever * sign
-        if link == ratios.inputs[0]:
-            row[-1] = 1.0
-        rows.append(row)
-        rhs.append(-external.get(link, 0.0))
+    planets, arm, place = _radial_layout(mechanism, ratios, carrier)
+    rows, rhs = _moment_balances(mechanism, ratios, carrier, planets, arm, place)
     solution, *_ = np.linalg.lstsq(np.array(rows), np.array(rhs), rcond=None)
     if not np.allclose(np.array(rows) @ solution, rhs, atol=1e-9 * (1 + np.abs(rhs).max())):
         raise MechanismError("the gear train's force balance has no solution")
-    tooth = {pid: float(solution[k]) for k, pid in enumerate(unknowns)}
+    tooth = {mesh.pair.id: float(solution[k]) for k, mesh in enumerate(ratios.meshes)}
     pins: dict[str, tuple[float, float]] = {}
     for planet in arm:
         fx = fy = 0.0
         for mesh in ratios.meshes:
-            if planet_of(mesh) != planet:
+            if planets[mesh.pair.id] != planet:
                 continue
             sign = 1.0 if mesh.b == planet else -1.0
             f = sign * tooth[mesh.pair.id]
@@ -454,6 +327,102 @@ def train_forces(
         for mesh in ratios.meshes
     }
     return TrainForces(tooth, pins, float(solution[-1]), levers)  # type: ignore[arg-type]
+
+
+def _planet_of(mechanism: Mechanism, mesh: Mesh, carrier: str) -> str:
+    """The gear of ``mesh`` that is a planet of ``carrier``."""
+    for x in (mesh.a, mesh.b):
+        if is_planet(mechanism, x, carrier):
+            return x
+    raise MechanismError(f"the mesh {mesh.pair.label} joins no planet of carrier {carrier}")
+
+
+def _teeth(ratios: TrainRatios) -> dict[int, tuple[int, int, float]]:
+    """``(z_a, z_b, module)`` of every mesh (tooth numbers found by coaxiality included).
+
+    Raises
+    ------
+    MechanismError
+        A mesh without ``module=``.
+    """
+    teeth = {}
+    for mesh in ratios.meshes:
+        za = mesh.za if mesh.za is not None else ratios.teeth_found[(mesh.pair.id, 1)]
+        zb = mesh.zb if mesh.zb is not None else ratios.teeth_found[(mesh.pair.id, 2)]
+        if mesh.pair.module is None:
+            raise MechanismError(f"the gear mesh {mesh.pair.label} needs module= for forces")
+        teeth[mesh.pair.id] = (za, zb, mesh.pair.module)
+    return teeth
+
+
+def _radial_layout(
+    mechanism: Mechanism, ratios: TrainRatios, carrier: str
+) -> tuple[dict[int, str], dict[str, float], dict[int, float]]:
+    """Each mesh's planet, each planet's carrier arm R, each mesh's x (central pitch radius).
+
+    Raises
+    ------
+    MechanismError
+        A mesh without ``module=`` or without a planet, or a planet whose meshes
+        are not coaxial.
+    """
+    teeth = _teeth(ratios)
+    planets: dict[int, str] = {}
+    arm: dict[str, float] = {}
+    place: dict[int, float] = {}  # x of each mesh
+    for mesh in ratios.meshes:
+        planet = planets[mesh.pair.id] = _planet_of(mechanism, mesh, carrier)
+        za, zb, module = teeth[mesh.pair.id]
+        z_planet, z_central = (za, zb) if mesh.a == planet else (zb, za)
+        r_central = module * z_central / 2
+        r_planet = module * z_planet / 2
+        place[mesh.pair.id] = r_central
+        radius = r_central - r_planet if mesh.internal else r_central + r_planet
+        if planet in arm and not math.isclose(arm[planet], radius, rel_tol=1e-9):
+            raise MechanismError(f"the meshes of planet {planet} are not coaxial")
+        arm[planet] = radius
+    return planets, arm, place
+
+
+def _moment_balances(
+    mechanism: Mechanism,
+    ratios: TrainRatios,
+    carrier: str,
+    planets: Mapping[int, str],
+    arm: Mapping[str, float],
+    place: Mapping[int, float],
+) -> tuple[list[list[float]], list[float]]:
+    """Each moving link's moment balance about its axis: rows in the tooth forces and the
+    balancing moment (last), and the right-hand sides (the ``moment`` loads)."""
+    ground = mechanism.ground
+    moving = sorted(
+        {x for mesh in ratios.meshes for x in (mesh.a, mesh.b)} - {ground} | {carrier},
+        key=mechanism.links.index,
+    )
+    size = len(ratios.meshes) + 1
+    rows: list[list[float]] = []
+    rhs: list[float] = []
+    external = {x.link: x.values[0] for x in mechanism.loads if x.kind == "moment"}
+    for link in moving:
+        row = [0.0] * size
+        for k, mesh in enumerate(ratios.meshes):
+            x = place[mesh.pair.id]
+            if link == carrier:
+                planet = planets[mesh.pair.id]
+                # force on the planet from this mesh, passed to the carrier through the pin
+                sign = 1.0 if mesh.b == planet else -1.0
+                row[k] += arm[planet] * sign
+                continue
+            if link not in (mesh.a, mesh.b):
+                continue
+            sign = 1.0 if link == mesh.b else -1.0
+            lever = x - arm[link] if link in arm else x
+            row[k] += lever * sign
+        if link == ratios.inputs[0]:
+            row[-1] = 1.0
+        rows.append(row)
+        rhs.append(-external.get(link, 0.0))
+    return rows, rhs
 
 
 @dataclass(frozen=True)

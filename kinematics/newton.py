@@ -1,0 +1,215 @@
+"""Groups without a closed form, by Newton's method, followed pose by pose from the sketch.
+
+A group's pair equations (:func:`~kinematics.equations.group_system`) are
+solved for its links' poses: on one pose by damped Newton steps
+(:func:`newton_pose`), over many poses by :func:`follow`, which starts each
+chunk of poses from a linear extrapolation of the last solutions and runs one
+batched Newton over the chunk. Far-apart inputs are first joined by
+intermediate poses (:func:`densified`, a continuation from the sketch) so that
+Newton keeps the sketch's assembly mode. The Jacobian's θ columns are scaled
+by the sketch's size (:func:`scaled_jacobian`) so that lengths and angles
+weigh alike.
+
+>>> from structure import analyze, parse_edgelist
+>>> from kinematics import make_plan
+>>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+...                     "point A 0 0", "point B 0 1", "point C 2 1", "point D 2 0"])
+>>> plan = make_plan(analyze(m))
+>>> rows, picks = densified(plan, np.array([[0.2]]))
+>>> rows.round(6).tolist(), picks.tolist()
+([[0.05], [0.1], [0.15], [0.2]], [3])
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .equations import group_system
+from .errors import AssemblyError
+from .plan import GroupStep, SolvePlan
+
+__all__ = ["densified", "follow", "needs_continuation", "newton_pose", "scaled_jacobian"]
+
+_MAX_NEWTON = 60
+_CHUNK_SPAN = 0.3  # input span (rad, or fraction of the sketch) of one batched Newton chunk
+_CHUNK_MAX = 1024
+_CHUNK_ITERATIONS = 12
+_MODE_JUMP = 0.2  # rad: a chunk whose angles land this far from the prediction changed mode
+_CONTINUATION_STEP = 0.05  # rad for a turning driver, fraction of the sketch for a sliding one
+
+
+def scaled_jacobian(jac: np.ndarray, length: float) -> np.ndarray:
+    """The Jacobian with its θ columns divided by ``length`` (lengths and angles weigh alike)."""
+    scaled = jac.copy()
+    scaled[..., 2::3] /= length
+    return scaled
+
+
+def newton_pose(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -> None:
+    """Newton on one pose (arrays of one row) from the current ``q`` of the group's links.
+
+    Raises
+    ------
+    AssemblyError
+        The residual stays above ``1e-9`` of the sketch's size.
+    """
+    tol = 1e-13 * plan.length
+    norm = math.inf
+    for _ in range(_MAX_NEWTON):
+        phi, jac, _, _ = group_system(step.links, step.equations, q, {}, 1)
+        norm = float(np.linalg.norm(phi))
+        if norm <= tol:
+            return
+        dz = np.linalg.lstsq(scaled_jacobian(jac, plan.length)[0], -phi[0], rcond=None)[0]
+        dz[2::3] /= plan.length
+        _line_search(step, q, dz, norm)
+    if norm > 1e-9 * plan.length:
+        raise AssemblyError.at(
+            step.label,
+            inputs,
+            f"its pairs do not close (residual {norm:.3g} m after {_MAX_NEWTON} Newton steps)",
+        )
+
+
+def _line_search(step: GroupStep, q: dict, dz: np.ndarray, norm: float) -> None:
+    """Move the group's links along the Newton step ``dz``, halved until the residual drops."""
+    base = {link: q[link].copy() for link in step.links}
+    step_size = 1.0
+    while True:
+        for i, link in enumerate(step.links):
+            q[link] = base[link] + step_size * dz[3 * i : 3 * i + 3]
+        trial = float(np.linalg.norm(group_system(step.links, step.equations, q, {}, 1)[0]))
+        if trial < norm or step_size < 1e-6:
+            return
+        step_size /= 2
+
+
+def _sequential(
+    step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, k: int, start: dict
+) -> dict[str, np.ndarray]:
+    """Newton on pose ``k`` alone, from ``start`` (link -> (3,))."""
+    one = {link: value[k : k + 1] for link, value in q.items()}
+    for link in step.links:
+        one[link] = start[link][None, :].copy()
+    newton_pose(step, plan, one, inputs[k])
+    return {link: one[link][0] for link in step.links}
+
+
+def _chunk_size(plan: SolvePlan, inputs: np.ndarray) -> int:
+    """Poses per batched Newton chunk: about ``_CHUNK_SPAN`` of input at the typical step."""
+    n = inputs.shape[0]
+    scale = _driver_scale(plan)
+    steps = np.max(np.abs(np.diff(inputs, axis=0)) / scale, axis=1) if n > 1 else np.zeros(1)
+    typical = float(np.median(steps)) if len(steps) else 0.0
+    return int(np.clip(_CHUNK_SPAN / typical, 8, _CHUNK_MAX)) if typical > 0 else 8
+
+
+def _predicted(
+    links: tuple[str, ...], out: dict, inputs: np.ndarray, k: int, idx: np.ndarray
+) -> dict[str, np.ndarray]:
+    """The poses ``idx`` extrapolated linearly (in the input) from the solutions at k−2, k−1."""
+    last = {link: out[link][k - 1] for link in links}
+    slope = (
+        {link: out[link][k - 1] - out[link][k - 2] for link in links}
+        if k >= 2
+        else {link: np.zeros(3) for link in links}
+    )
+    step_in = np.linalg.norm(inputs[k - 1] - inputs[k - 2]) if k >= 2 else 0.0
+    reach = np.linalg.norm(inputs[idx] - inputs[k - 1], axis=1)
+    ratio = reach / step_in if step_in > 0 else np.zeros(len(idx))
+    return {link: last[link] + ratio[:, None] * slope[link] for link in links}
+
+
+def _batched_newton(step: GroupStep, plan: SolvePlan, chunk: dict, size: int) -> bool:
+    """Newton over a chunk of poses at once (``chunk`` updated in place); True if it converged."""
+    tol = 1e-13 * plan.length
+    for _ in range(_CHUNK_ITERATIONS):
+        phi, jac, _, _ = group_system(step.links, step.equations, chunk, {}, size)
+        worst = float(np.max(np.abs(phi)))
+        if worst <= tol:
+            return True
+        try:
+            dz = np.linalg.solve(scaled_jacobian(jac, plan.length), -phi[..., None])[..., 0]
+        except np.linalg.LinAlgError:
+            return False
+        dz[:, 2::3] /= plan.length
+        for i, link in enumerate(step.links):
+            chunk[link] = chunk[link] + dz[:, 3 * i : 3 * i + 3]
+    return False
+
+
+def follow(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, start: dict) -> None:
+    """Solve a Newton group for every pose, following the inputs in order.
+
+    The first pose starts from ``start``; then chunks of poses start from a
+    linear extrapolation of the last two solutions and run one batched Newton
+    together. A chunk where any pose fails to converge, or lands farther from
+    its prediction than the step between poses allows (another assembly mode),
+    is redone pose by pose from the previous solution. The group's links'
+    poses are stored in ``q``.
+
+    Raises
+    ------
+    AssemblyError
+        At the first pose where the group does not close.
+    """
+    n = inputs.shape[0]
+    links = step.links
+    out = {link: np.zeros((n, 3)) for link in links}
+    first = _sequential(step, plan, q, inputs, 0, start)
+    for link in links:
+        out[link][0] = first[link]
+    k = 1
+    size = _chunk_size(plan, inputs)
+    while k < n:
+        stop = min(n, k + size)
+        idx = np.arange(k, stop)
+        chunk = {name: value[idx] for name, value in q.items()}
+        predicted = _predicted(links, out, inputs, k, idx)
+        for link in links:
+            chunk[link] = predicted[link].copy()
+        converged = _batched_newton(step, plan, chunk, len(idx))
+        jumps = max(float(np.max(np.abs(chunk[link] - predicted[link])[:, 2])) for link in links)
+        if converged and jumps <= _MODE_JUMP:
+            for link in links:
+                out[link][idx] = chunk[link]
+        else:
+            for j in idx:
+                solved = _sequential(
+                    step, plan, q, inputs, int(j), {link: out[link][j - 1] for link in links}
+                )
+                for link in links:
+                    out[link][j] = solved[link]
+        k = stop
+    for link in links:
+        q[link] = out[link]
+
+
+def _driver_scale(plan: SolvePlan) -> np.ndarray:
+    """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size."""
+    return np.array([1.0 if d.kind == "R" else plan.length for d in plan.drivers])
+
+
+def needs_continuation(plan: SolvePlan) -> bool:
+    """Whether some step is solved by Newton (so far-apart inputs need intermediate poses)."""
+    return any(step.group is None or step.group.kind is None for step in plan.steps)
+
+
+def densified(plan: SolvePlan, inputs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Inputs with intermediate rows from the sketch on, so Newton never jumps far.
+
+    Returns the rows and, for each row of ``inputs``, its index among them.
+    """
+    scale = _driver_scale(plan)
+    previous = np.vstack([np.zeros((1, inputs.shape[1])), inputs[:-1]])
+    jump = np.max(np.abs(inputs - previous) / scale, axis=1) if len(scale) else np.zeros(0)
+    pieces = np.maximum(1, np.ceil(jump / _CONTINUATION_STEP)).astype(int)
+    picks = np.cumsum(pieces) - 1
+    # row i's pieces: previous_i + (input_i − previous_i)·k/pieces_i, k = 1 … pieces_i
+    owner = np.repeat(np.arange(len(inputs)), pieces)
+    k = np.arange(len(owner)) - np.repeat(picks - pieces + 1, pieces) + 1
+    fraction = (k / pieces[owner])[:, None]
+    rows = previous[owner] + (inputs[owner] - previous[owner]) * fraction
+    return rows, picks

@@ -1,0 +1,151 @@
+"""The house is one-way: every import points down (issue 10's layout, STYLE.md §6).
+
+Each module of ``structure`` and ``kinematics`` is read with :mod:`ast` (not
+imported), so an import inside a function counts as much as one at the top.
+Floors, from the bottom:
+
+- ``structure``: the analysis (model, validation, rigidity, mobility,
+  replacement, assur, report, ...) < ``structure.readwrite`` < ``structure.explain``;
+- ``kinematics``: the solvers (plan, solve, sweep, forces, gears, ...) <
+  ``kinematics.explain`` and ``kinematics.figures`` < ``kinematics.cli``;
+- ``structure`` < ``kinematics``: structure never imports kinematics;
+- each package's ``__init__`` is the façade on top that re-exports its public API.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import networkx as nx
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PACKAGES = ("structure", "kinematics")
+
+
+def _module_name(path: Path) -> str:
+    parts = list(path.relative_to(ROOT).with_suffix("").parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+def _modules() -> dict[str, Path]:
+    return {
+        _module_name(path): path
+        for package in PACKAGES
+        for path in sorted((ROOT / package).rglob("*.py"))
+    }
+
+
+MODULES = _modules()
+
+
+def _imports(name: str, path: Path) -> list[tuple[str, tuple[str, ...], int, bool]]:
+    """``(target module, imported names, line, at top level)`` for every import in a module."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+    top_level = {id(node) for node in tree.body}
+    # ``if TYPE_CHECKING:`` imports never run: annotations only, they count as top level
+    for node in tree.body:
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            top_level |= {id(inner) for inner in node.body}
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                found.append((alias.name, (), node.lineno, id(node) in top_level))
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")
+                base = base[: len(base) - node.level + 1]
+                target = ".".join([*base, *([node.module] if node.module else [])])
+            else:
+                target = node.module or ""
+            names = tuple(alias.name for alias in node.names)
+            if node.module is None:  # ``from . import x``: each name is a module
+                for alias in node.names:
+                    found.append((f"{target}.{alias.name}", (), node.lineno, id(node) in top_level))
+            else:
+                found.append((target, names, node.lineno, id(node) in top_level))
+    return found
+
+
+def _floor(module: str) -> tuple[str, int]:
+    """The package a module belongs to and its floor inside that package."""
+    parts = module.split(".")
+    package, sub = parts[0], parts[1] if len(parts) > 1 else ""
+    if len(parts) == 1:  # the package root is the façade that re-exports the public API
+        return package, 3
+    if package == "structure":
+        return package, {"readwrite": 1, "explain": 2}.get(sub, 0)
+    return package, {"explain": 1, "figures": 1, "cli": 2, "__main__": 2}.get(sub, 0)
+
+
+def _project_imports():
+    for name, path in MODULES.items():
+        for target, names, line, top in _imports(name, path):
+            if target.split(".")[0] in PACKAGES:
+                yield name, path, target, names, line, top
+
+
+def test_structure_never_imports_kinematics() -> None:
+    back = [
+        f"{path.relative_to(ROOT)}:{line} imports {target}"
+        for name, path, target, _, line, _ in _project_imports()
+        if name.startswith("structure") and target.startswith("kinematics")
+    ]
+    assert not back, "structure imports kinematics:\n" + "\n".join(back)
+
+
+def test_every_import_points_down_inside_each_package() -> None:
+    up = []
+    for name, path, target, _, line, _ in _project_imports():
+        (package, floor), (target_package, target_floor) = _floor(name), _floor(target)
+        if package == target_package and target_floor > floor:
+            up.append(f"{path.relative_to(ROOT)}:{line} imports {target} from a floor above")
+    assert not up, "\n".join(up)
+
+
+def test_no_module_imports_a_private_name_of_another() -> None:
+    private = [
+        f"{path.relative_to(ROOT)}:{line} imports {n} from {target}"
+        for name, path, target, names, line, _ in _project_imports()
+        for n in names
+        if n.startswith("_") and not n.startswith("__") and target != name
+    ]
+    assert not private, "\n".join(private)
+
+
+def test_the_top_level_import_graph_has_no_cycle() -> None:
+    graph = nx.DiGraph()
+    for name, _, target, names, _, top in _project_imports():
+        if not top:
+            continue
+        # ``from package import module`` imports the module; otherwise the module named
+        for module in [f"{target}.{n}" for n in names if f"{target}.{n}" in MODULES] or [target]:
+            if module in MODULES and module != name and not name.startswith(f"{module}."):
+                graph.add_edge(name, module)
+    # a package's __init__ re-exporting its own modules is not a cycle of the house
+    own = [(a, b) for a, b in graph.edges if b.startswith(f"{a}.")]
+    graph.remove_edges_from(own)
+    cycles = list(nx.simple_cycles(graph))
+    assert not cycles, "import cycles:\n" + "\n".join(" -> ".join(c) for c in cycles[:10])
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_function_local_imports_are_the_documented_exceptions(module: str) -> None:
+    """Lazy imports are allowed only where laziness is the point (see ALLOWED)."""
+    local = [
+        (target, line)
+        for target, _, line, top in _imports(module, MODULES[module])
+        if not top and not target.startswith("__future__")
+    ]
+    allowed = ALLOWED_LOCAL_IMPORTS.get(module, ())
+    unexpected = [f"{target} (line {line})" for target, line in local if target not in allowed]
+    assert not unexpected, f"{module}: function-local imports " + ", ".join(unexpected)
+
+
+#: module -> the modules it may import inside a function, and why
+ALLOWED_LOCAL_IMPORTS: dict[str, tuple[str, ...]] = {}

@@ -46,6 +46,7 @@ from ..serialization import (
 )
 from ..solve import solve_pose
 from ..sweep import read_inputs, sweep
+from . import convert
 
 __all__ = ["main"]
 
@@ -149,6 +150,9 @@ def _parser() -> argparse.ArgumentParser:
     an.add_argument("--fps", type=float, default=12.0, help="frames per second (default 12)")
     an.add_argument(
         "--inputs", metavar="FILE", help="the frames' driver inputs, as for 'assur sweep --inputs'"
+    )
+    convert.add_arguments(
+        sub.add_parser("convert", help="a mechanism to another format, its drawing or its sweep")
     )
     for command in (classify, kin, fo):
         _add_explain(command)
@@ -607,6 +611,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _gears(args)
     if args.command == "animate":
         return _animate(args)
+    if args.command == "convert":
+        return convert.run(args)
     parser.error(f"unknown command {args.command}")
     return 2
 

@@ -12,10 +12,11 @@ import argparse
 from collections.abc import Callable
 
 from structure.explain.structural import FORMATS, LANGUAGES
+from structure.readwrite.formats import WRITE_SUFFIXES
 
 from .plotting import PLOT_FORMATS
 
-__all__ = ["COMMANDS", "build_parser"]
+__all__ = ["COMMANDS", "DRAWING_SUFFIXES", "SWEEP_SUFFIXES", "build_parser"]
 
 _DESCRIPTION = (
     "Planar mechanisms by Assur groups: structure, kinematics, forces, gear "
@@ -160,6 +161,45 @@ def _animate_arguments(command: argparse.ArgumentParser) -> None:
     _add_inputs(command, "the frames' driver inputs, as for 'assur sweep --inputs'")
 
 
+#: drawings at one pose: matplotlib's formats and DXF
+DRAWING_SUFFIXES = (".svg", ".png", ".pdf", ".dxf")
+#: tables of a sweep
+SWEEP_SUFFIXES = (".csv", ".parquet")
+
+
+def _convert_arguments(parser: argparse.ArgumentParser) -> None:
+    """``convert IN OUT [--driver L] [--pose X ...] [--flip GROUP] [--steps N] [--inputs FILE]``."""
+    parser.add_argument(
+        "file", metavar="IN", help="mechanism: .edges, .json (ours or pylinkage's), .pyslvs"
+    )
+    parser.add_argument(
+        "out",
+        metavar="OUT",
+        help="by extension: " + ", ".join((*WRITE_SUFFIXES, *DRAWING_SUFFIXES, *SWEEP_SUFFIXES)),
+    )
+    parser.add_argument(
+        "--driver", action="append", metavar="L", help="driving link (repeat for several)"
+    )
+    parser.add_argument(
+        "--pose",
+        nargs="+",
+        metavar="X",
+        help="draw at this input of each driver from the sketch: degrees, or metres for a "
+        "sliding driver (default: the sketch)",
+    )
+    parser.add_argument(
+        "--flip",
+        action="append",
+        metavar="GROUP",
+        default=[],
+        help="assemble this dyad (e.g. 'II(2,3)') in the other mode than the sketch's",
+    )
+    parser.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
+    parser.add_argument(
+        "--inputs", metavar="FILE", help="the sweep's poses, as for 'assur sweep --inputs'"
+    )
+
+
 #: every command, in the order ``assur --help`` lists them: name, help line, its arguments
 COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...] = (
     (
@@ -180,6 +220,12 @@ COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...]
     ),
     ("sweep", "the kinematics over a whole turn of the driver(s)", _sweep_arguments),
     ("animate", "an animation of the mechanism over one turn of the driver(s)", _animate_arguments),
+    (
+        "convert",
+        "a mechanism into another format (edge list, JSON, pyslvs), its drawing (SVG, DXF, ...) "
+        "or its sweep (CSV, Parquet)",
+        _convert_arguments,
+    ),
 )
 
 

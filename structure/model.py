@@ -7,6 +7,13 @@ sketch. Revolute pairs that name the same point form one compound hinge: a
 hinge joining k links is k - 1 pairs. Every transformation returns a new
 Mechanism; nothing here computes anything beyond validation.
 
+The statements are built from Python values by :func:`make_pair`,
+:func:`make_point`, :func:`make_load` and :func:`make_driver`, with the checks
+of :mod:`structure.validation` that both readers share. ``PairKind``,
+``LoadKind``, ``validated``, ``DRIVER_KEYS`` and ``LOAD_KINDS`` are defined in
+:mod:`structure.kinds` and :mod:`structure.validation` and importable from
+here as before.
+
 >>> m = Mechanism.from_pairs([("0", "1", "R", "A"), ("1", "2", "R", "B"),
 ...                           ("2", "3", "R", "C"), ("3", "0", "R", "D")],
 ...                          drivers=["1"], name="four-bar")
@@ -55,7 +62,6 @@ __all__ = [
     "make_load",
     "make_pair",
     "make_point",
-    "number_text",
     "validated",
 ]
 

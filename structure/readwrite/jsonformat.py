@@ -453,7 +453,7 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
     if mechanism.loads:
         out["loads"] = [
             {
-                "kind": x.kind,
+                "kind": x.kind.value,
                 "link": x.link,
                 "point": x.point,
                 "values": [

@@ -393,11 +393,19 @@ def _pair_from_item(item: Sequence[Any], pair_id: int) -> Pair:
         raise StatementError("a pair is (a, b, kind[, point][, options])")
     kind = item[2] if isinstance(item[2], PairKind) else str(item[2])
     point = None if len(item) < 4 or item[3] is None else str(item[3])
-    named = {
-        key: str(value) if key in ("flat", "roller", "internal") and value is not None else value
-        for key, value in options.items()
-    }
+    named = {key: _names_as_text(key, value) for key, value in options.items()}
     return make_pair(pair_id, kind, str(item[0]), str(item[1]), point, **named)
+
+
+def _names_as_text(key: str, value: Any) -> Any:
+    """An option naming links or points, its names as strings (numbers name links too)."""
+    if value is None:
+        return None
+    if key in ("flat", "roller", "internal"):
+        return str(value)
+    if key == "centers" and isinstance(value, (tuple, list)):
+        return tuple(None if c is None else str(c) for c in value)
+    return value
 
 
 def make_point(

@@ -324,11 +324,11 @@ def _groups_from_blocks(
     merged = UnionFind(start.values())
     owner = _block_owners(system, analysis.assigned, start, merged)
     _merge_split_pairs(system, analysis.assigned, owner, merged)
-    nodes, edges = _merge_cycles(system, analysis.assigned, owner, merged)
+    nodes, edges, root = _merge_cycles(system, analysis.assigned, owner, merged)
     members: dict[int, list[str]] = {}
     for link in mechanism.moving_links:
         if link in start:
-            members.setdefault(merged[start[link]], []).append(link)
+            members.setdefault(root[start[link]], []).append(link)
     position = {link: i for i, link in enumerate(mechanism.links)}
     order = _topological_order(
         nodes, edges, {b: min(position[x] for x in members[b]) for b in nodes}
@@ -409,14 +409,17 @@ def _merge_cycles(
     assigned: Sequence[Sequence[int]],
     owner: Sequence[int | None],
     merged: UnionFind,
-) -> tuple[list[int], set[tuple[int, int]]]:
+) -> tuple[list[int], set[tuple[int, int]], dict[int, int]]:
     """Merge blocks that depend on each other until their dependencies form a DAG.
 
-    Returns the merged blocks (each named by a member) and the DAG's edges.
+    Returns the merged blocks (each named by a member), the DAG's edges and
+    the merged block of every block.
     """
     while True:
-        edges = _block_dependencies(system, assigned, owner, merged)
-        nodes = sorted({merged[b] for b in merged})
+        root = {b: merged[b] for b in merged}
+        merged_owner = [None if b is None else root[b] for b in owner]
+        edges = _block_dependencies(system, assigned, merged_owner)
+        nodes = sorted(set(root.values()))
         number = {b: i for i, b in enumerate(nodes)}
         successors: list[list[int]] = [[] for _ in nodes]
         for u, v in edges:
@@ -427,7 +430,7 @@ def _merge_cycles(
         )
         cycles = [c for c in components if len(c) > 1]
         if not cycles:
-            return nodes, edges
+            return nodes, edges, root
         for c in cycles:
             merged.union(*(nodes[i] for i in c))
 
@@ -435,24 +438,23 @@ def _merge_cycles(
 def _block_dependencies(
     system: ConstraintSystem,
     assigned: Sequence[Sequence[int]],
-    owner: Sequence[int | None],
-    merged: UnionFind,
+    merged_owner: Sequence[int | None],
 ) -> set[tuple[int, int]]:
-    """``(source, target)`` for each merged block a row of another block also touches."""
+    """``(source, target)`` for each merged block a row of another block also touches.
+
+    ``merged_owner`` is the merged block of each unknown (None for the knowns).
+    """
     edges: set[tuple[int, int]] = set()
     for r, units in enumerate(assigned[: system.n_pair_rows]):
         if not units:
             continue
-        first = owner[units[0]]
-        if first is None:
+        target = merged_owner[units[0]]
+        if target is None:
             continue
-        target = merged[first]
         for w in system.row_adj[r]:
-            b = owner[w]
-            if b is not None:
-                source = merged[b]
-                if source != target:
-                    edges.add((source, target))
+            source = merged_owner[w]
+            if source is not None and source != target:
+                edges.add((source, target))
     return edges
 
 
@@ -606,6 +608,8 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
 
 def _components(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
     """Connected components of the bipartite graph links ↔ joints (a joint joins ≥ 2 links)."""
+    if len(joints) < 2:  # a dyad's one joint: no union-find needed
+        return len(links) + len(joints) - sum(len(j) for j in joints)
     pieces = UnionFind(links)
     for joint in joints:
         pieces.union(*joint)

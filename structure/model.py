@@ -360,7 +360,7 @@ def make_pair(
     >>> make_pair(2, PairKind.H, "1", "2", "K", gear=True, z=(20, None)).teeth
     (20, None)
     """
-    given = {key: value for key, value in options.items() if value is not None}
+    given = {key: value for key, value in options.items() if value is not None} if options else {}
     kind = check_pair(kind, a, b, given, gear=gear)
     if not given and not gear:
         return Pair(pair_id, kind, a, b, point, line_no=line_no)

@@ -182,17 +182,11 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
 
 
 def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
-    """The grammar of a pair line; the checks of its content are :func:`make_pair`'s.
-
-    The kind, the links and each option's key are checked while reading,
-    in the order of the line, so that a line with several problems names
-    the first one.
-    """
+    """The grammar of a pair line; the checks of its content are :func:`make_pair`'s."""
     if len(tokens) < 3:
         raise StatementError("a pair needs at least 'a b KIND'")
     a, b = tokens[0], tokens[1]
     kind = pair_kind(tokens[2])
-    check_pair_links(a, b)
     rest = tokens[3:]
     gear = kind is PairKind.H and "gear" in rest
     if gear:
@@ -204,15 +198,30 @@ def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
     for tok in rest:
         key, eq, value = tok.partition("=")
         if not eq or not key or not value:
-            raise StatementError(f"unexpected token {tok!r} (options are key=value)")
-        check_pair_option(kind, key)
+            reason = f"unexpected token {tok!r} (options are key=value)"
+            raise _grammar_problem(kind, a, b, options, reason)
         if key in options:
-            raise StatementError(f"option {key!r} given twice")
+            raise _grammar_problem(kind, a, b, options, f"option {key!r} given twice")
         options[key] = value
     if not options:
         return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no)
     typed = {key: _OPTION_READERS.get(key, str)(text) for key, text in options.items()}
     return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no, **typed)
+
+
+def _grammar_problem(
+    kind: PairKind, a: str, b: str, earlier: Iterable[str], reason: str
+) -> StatementError:
+    """The problem of a pair line whose grammar fails at some token.
+
+    The model's checks of what comes before that token (the links, the keys
+    of the earlier options) are reported first, as the line is read from the
+    left: their problem, if any, is raised here; else ``reason`` is returned.
+    """
+    check_pair_links(a, b)
+    for key in earlier:
+        check_pair_option(kind, key)
+    return StatementError(reason)
 
 
 def _option_number(text: str) -> float:

@@ -1,4 +1,9 @@
-"""Read and write the edge-list format of a mechanism.
+"""Read and write the edge-list format of a mechanism: the grammar, nothing more.
+
+The reader splits lines into tokens, ``key=value`` options and numbers, and
+builds each statement with :func:`~structure.model.make_pair` (and
+``make_point``, ``make_load``, ``make_driver``), whose checks the JSON reader
+shares; the writer prints each statement's canonical line.
 
 One statement per line, ``#`` starts a comment, tokens are separated by
 whitespace::
@@ -14,9 +19,14 @@ whitespace::
     point D 0.4 0
     point M 0.1 0.2 on=2            # a marker fixed to link 2
 
-Pair options: ``angle=DEG`` (P: slide direction), ``flat=L``, ``roller=L``,
-``centers=O1,O2``, ``normal=DEG`` (H). The words ``name``, ``ground``,
-``driver`` and ``point`` are reserved at the start of a line.
+Pair options: ``circle=R`` (R: friction circle); ``angle=DEG`` (P: slide
+direction), ``span=S``, ``friction=F``; ``flat=L``, ``roller=L``,
+``centers=O1,O2``, ``normal=DEG`` (H), and for a gear mesh the word ``gear``
+with ``z=ZA,ZB``, ``internal=L``, ``module=M``. Loads: ``force LINK POINT fx
+fy``, ``moment LINK M``, ``mass LINK m J S``, ``gravity gx gy``, ``balance
+LINK POINT angle=DEG``. The words ``name``, ``ground``, ``driver``, ``point``
+and the load words are reserved at the start of a line (unless the third
+word is a pair kind).
 
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> m.driver_links, len(m.pairs)

@@ -93,14 +93,17 @@ def _is_finite(value: Any) -> bool:
 
 
 # ----------------------------------------------------------------------------- pairs
+_PAIR_LETTERS = {kind.value: kind for kind in PairKind}
+
+
 def pair_kind(kind: PairKind | str) -> PairKind:
     """The :class:`PairKind` of ``kind`` (a member or its letter)."""
     if isinstance(kind, PairKind):
         return kind
-    try:
-        return PairKind(kind)
-    except ValueError:
-        raise StatementError(f"unknown pair kind {kind!r} (use R, P or H)") from None
+    found = _PAIR_LETTERS.get(kind) if isinstance(kind, str) else None
+    if found is None:
+        raise StatementError(f"unknown pair kind {kind!r} (use R, P or H)")
+    return found
 
 
 def check_pair_links(a: str, b: str) -> None:

@@ -81,7 +81,8 @@ __all__ = [
     "write_edgelist",
 ]
 
-_KEYWORDS = frozenset(("name", "ground", "driver", "point", *(k.value for k in LoadKind)))
+#: the words that start a statement other than a pair (``name`` starts a title)
+_STATEMENTS = frozenset(("ground", "driver", "point", *(k.value for k in LoadKind)))
 _PAIR_LETTERS = frozenset(k.value for k in PairKind)
 
 
@@ -106,19 +107,28 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         a cycle, a link or driver not joined to the ground, an empty file.
     """
     found = _Statements()
+    pairs = found.pairs
     for line_no, raw in enumerate(lines, start=1):
         text = raw.split("#", 1)[0]
         tokens = text.split()
         if not tokens:
             continue
+        head = tokens[0]
         try:
-            found.read(tokens, text, line_no)
+            # a statement word followed by a pair kind is a pair whose first link has that
+            # name (no statement has R, P or H third); a `name` line is always a title
+            if head == "name":
+                found.name = text.strip()[4:].strip()
+            elif head not in _STATEMENTS or (len(tokens) >= 3 and tokens[2] in _PAIR_LETTERS):
+                pairs.append(_pair(tokens, len(pairs) + 1, line_no))
+            else:
+                found.read_statement(tokens, line_no)
         except StatementError as exc:
             found.problems.append(EdgeListProblem(line_no, raw, exc.reason))
     if found.problems:
         raise EdgeListError(source, found.problems)
     mechanism = Mechanism(
-        tuple(found.pairs),
+        tuple(pairs),
         found.ground if found.ground is not None else "0",
         tuple(found.drivers),
         found.points,
@@ -131,7 +141,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
 
 @dataclass
 class _Statements:
-    """The statements of one description, gathered line by line."""
+    """The statements of one description, gathered line by line, and its problems."""
 
     name: str = ""
     ground: str | None = None
@@ -142,16 +152,10 @@ class _Statements:
     loads: list[Load] = field(default_factory=list)
     problems: list[EdgeListProblem] = field(default_factory=list)
 
-    def read(self, tokens: list[str], text: str, line_no: int) -> None:
-        """Read one line's statement; raise StatementError on a bad one."""
+    def read_statement(self, tokens: list[str], line_no: int) -> None:
+        """Read a ``ground``, ``driver``, ``point`` or load line; raise StatementError if bad."""
         head = tokens[0]
-        # a statement word followed by a pair kind is a pair whose first link has that
-        # name (no statement has R, P or H third); a `name` line is always a title
-        if head == "name":
-            self.name = text.strip()[4:].strip()
-        elif head not in _KEYWORDS or (len(tokens) >= 3 and tokens[2] in _PAIR_LETTERS):
-            self.pairs.append(_pair(tokens, len(self.pairs) + 1, line_no))
-        elif head == "ground":
+        if head == "ground":
             self._read_ground(tokens, line_no)
         elif head == "driver":
             self.drivers.append(_driver(tokens, line_no))

@@ -11,14 +11,13 @@ import sys
 from structure.errors import MechanismError, MobilityError
 from structure.explain.structural import explain_structure
 from structure.readwrite.edgelist import read_edgelist
-from structure.report import (
-    all_driver_choices,
-    analyze,
+from structure.readwrite.reports import (
     format_mobility_error,
     format_report,
     mobility_error_dict,
     report_to_dict,
 )
+from structure.report import all_driver_choices, analyze
 
 from .output import EXIT_MECHANISM, EXIT_OK, failed, print_json
 from .plotting import check_plot, load_drawing

@@ -67,6 +67,8 @@ class Frame:
       slider on its guide).
 
     They are then computed when first read, so a solve pays only for what is used.
+    A frame solved for positions only has ``None`` for the point's rates (and
+    the second point's); only its positions can be read then.
     """
 
     __slots__ = ("_cos", "_epsilon", "_omega", "_second", "_sin", "_turns_with", "ax", "ay",
@@ -99,17 +101,30 @@ class Frame:
         return f"Frame(ref={self.ref.tolist()})"
 
     def _turn(self) -> None:
+        """The rotation's cosine and sine, from the frame turned with or the second point."""
         like = self._turns_with
         if like is not None:
-            self._cos, self._sin = like.cos, like.sin
-            self._omega, self._epsilon, self.theta = like.omega, like.epsilon, like.theta
+            self._cos, self._sin, self.theta = like.cos, like.sin, like.theta
             return
-        xy, x, y, vx, vy, ax, ay = self._second
+        xy, x, y = self._second[:3]
         sx, sy = float(xy[0] - self.ref[0]), float(xy[1] - self.ref[1])
         k = 1.0 / (sx * sx + sy * sy)
         rx, ry = x - self.x, y - self.y
         self._cos = (sx * k) * rx + (sy * k) * ry
         self._sin = (sx * k) * ry - (sy * k) * rx
+
+    def _turn_rates(self) -> None:
+        """ω and ε, from the frame turned with or the second point (``(r × Δv)/|r|²``)."""
+        like = self._turns_with
+        if like is not None:
+            self._omega, self._epsilon = like.omega, like.epsilon
+            return
+        if self.vx is None:
+            raise ValueError("a frame solved for positions only has no rates")
+        xy, x, y, vx, vy, ax, ay = self._second
+        sx, sy = float(xy[0] - self.ref[0]), float(xy[1] - self.ref[1])
+        k = 1.0 / (sx * sx + sy * sy)
+        rx, ry = x - self.x, y - self.y
         self._omega = (rx * (vy - self.vy) - ry * (vx - self.vx)) * k
         self._epsilon = (rx * (ay - self.ay) - ry * (ax - self.ax)) * k
 
@@ -128,13 +143,13 @@ class Frame:
     @property
     def omega(self) -> Values:
         if self._omega is None:
-            self._turn()
+            self._turn_rates()
         return self._omega
 
     @property
     def epsilon(self) -> Values:
         if self._epsilon is None:
-            self._turn()
+            self._turn_rates()
         return self._epsilon
 
     def offset(self, point: np.ndarray) -> tuple[Values, Values]:
@@ -195,9 +210,17 @@ class Frame:
 GROUND_FRAME = Frame(np.zeros(2), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
 
 
-def frame_of_columns(q: np.ndarray, qd: np.ndarray, qdd: np.ndarray) -> Frame:
-    """The frame of a link given as ``(N, 3)`` poses and rates (reference: the frame origin)."""
+def frame_of_columns(q: np.ndarray, qd: np.ndarray | None, qdd: np.ndarray | None) -> Frame:
+    """The frame of a link given as ``(N, 3)`` poses and rates (reference: the frame origin).
+
+    ``qd`` and ``qdd`` None: a frame of positions only.
+    """
     theta = q[:, 2]
+    if qd is None or qdd is None:
+        return Frame(
+            np.zeros(2), q[:, 0], q[:, 1], None, None, None, None,
+            np.cos(theta), np.sin(theta), None, None, theta,
+        )  # fmt: skip
     return Frame(
         np.zeros(2),
         q[:, 0],

@@ -70,6 +70,7 @@ def newton_pose(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -
             step.label,
             inputs,
             f"its pairs do not close (residual {norm:.3g} m after {_MAX_NEWTON} Newton steps)",
+            plan.driver_kinds,
         )
 
 

@@ -48,7 +48,24 @@ from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
 
-__all__ = ["frame_dyad", "place_dyad"]
+__all__ = ["NOT_CLOSED", "PinCache", "frame_dyad", "place_dyad"]
+
+
+class PinCache(dict):
+    """``(link, x, y) -> (x, y, vx, vy, ax, ay)``: the pins a solve has found, each once.
+
+    ``joints`` holds the keys of the dyads' joints, which the closed forms find
+    themselves; every other entry is its link's frame's :meth:`Frame.point`
+    (or :meth:`Frame.position`, the rates None), as any point of that link is.
+    """
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.joints: set = set()
+
+    def on_frames(self) -> dict:
+        """The entries that come from a link's frame (not the dyads' joints)."""
+        return {k: v for k, v in self.items() if k not in self.joints}
 
 
 # ---------------------------------------------------------------- shared pieces
@@ -282,10 +299,17 @@ def _frame_rrr(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) 
     len1, len2 = float(s1 @ s1), float(s2 @ s2)
     _check_coincident(solve, pins_b, pins_d, len1, len2, (e1.point, e2.point))
     joint = (c, *_circle_circle(solve, pins_b, pins_d, len1, len2, side))
-    solve.pins[(l1, *c)] = solve.pins[(l2, *c)] = joint[1:]
+    _joint(solve, (l1, *c), (l2, *c), joint[1:])
     solve.frames[l1] = Frame(b, bx, by, bvx, bvy, bax, bay, second=joint)
     solve.frames[l2] = Frame(d, dx, dy, dvx, dvy, dax, day, second=joint)
     return True
+
+
+def _joint(solve: _FrameSolve, key1: tuple, key2: tuple, values: tuple) -> None:
+    """Keep a dyad's joint in the solve's pins, under both of its links."""
+    solve.pins[key1] = solve.pins[key2] = values
+    if isinstance(solve.pins, PinCache):
+        solve.pins.joints.update((key1, key2))
 
 
 def _check_coincident(
@@ -342,11 +366,13 @@ def _circle_circle(
     along *= 0.5
     h = np.multiply(along, along, out=t)
     np.subtract(len1, h, out=h)
-    if (bad := h < -tol).any():
-        raise _not_assembled(step, solve.plan, inputs, bad)
+    if h.min() < -tol:
+        raise _not_assembled(step, solve.plan, inputs, h < -tol)
     np.maximum(h, 0.0, out=h)
     _watch_dips(solve, h)
     np.sqrt(h, out=h)
+    if not solve.rates:  # |C − B|·|C − D|·sine = |BD|·h: the dead centres from h alone
+        _dead_height(solve, h, inv, len1, len2)
     h *= side
     h *= inv
     along *= inv
@@ -357,14 +383,26 @@ def _circle_circle(
     r1x -= ey
     r1y += ex
     cx, cy = bx + r1x, by + r1y
+    if not solve.rates:
+        return cx, cy, None, None, None, None
     r2x, r2y = cx - dx, cy - dy  # C − D
     det = r1x * r2y
     t = np.multiply(r1y, r2x, out=ex)
     det -= t
-    _dead_centre(step, solve.plan, inputs, det * (1.0 / math.sqrt(len1 * len2)))
-    if not solve.rates:
-        return cx, cy, None, None, None, None
+    if np.abs(det).min() * (1.0 / math.sqrt(len1 * len2)) <= DEAD_CENTRE:
+        _dead_centre(step, solve.plan, inputs, det * (1.0 / math.sqrt(len1 * len2)))
     return (cx, cy, *_rrr_rates(pin_b, pin_d, r1x, r1y, r2x, r2y, det, t))
+
+
+def _dead_height(solve: _FrameSolve, h: np.ndarray, inv, len1: float, len2: float) -> None:
+    """The dead-centre check of an RRR dyad from C's height ``h`` over BD (``inv`` = 1/|BD|).
+
+    The sine of the transmission angle is |BD|·h/(|BC|·|CD|).
+    """
+    scale = 1.0 / math.sqrt(len1 * len2)
+    sine = h / inv
+    if sine.min() * scale <= DEAD_CENTRE:
+        _dead_centre(solve.step, solve.plan, solve.inputs, sine * scale)
 
 
 def _rrr_rates(
@@ -449,7 +487,7 @@ def _frame_rrp(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) 
         _dead_centre(solve.step, plan, solve.inputs, (r1x * ux + r1y * uy) / math.sqrt(len1))
         rates = (None, None, None, None)
     joint = (c, cx, cy, *rates)
-    solve.pins[(rod, *c)] = solve.pins[(slider, *c)] = joint[1:]
+    _joint(solve, (rod, *c), (slider, *c), joint[1:])
     solve.frames[rod] = Frame(b, bx, by, bvx, bvy, bax, bay, second=joint)
     solve.frames[slider] = Frame(c, *joint[1:], turns_with=guide)
     return True

@@ -177,6 +177,34 @@ class Frame:
             ax, ay = ax - e * ry, ay + e * rx
         return self.x + rx, self.y + ry, self.vx - w * ry, self.vy + w * rx, ax, ay
 
+    def point_into(self, point: np.ndarray, out: tuple) -> None:
+        """:meth:`point` (or with two arrays in ``out``, :meth:`position`) written into ``out``.
+
+        The same arithmetic, so the same values to the last bit; the results
+        land in the caller's arrays instead of fresh ones.
+        """
+        dx, dy = float(point[0] - self.ref[0]), float(point[1] - self.ref[1])
+        if dx == 0.0 and dy == 0.0:
+            for target, value in zip(out, (self.x, self.y, self.vx, self.vy, self.ax, self.ay),
+                                     strict=False):  # fmt: skip
+                target[...] = value
+            return
+        c, s = self.cos, self.sin
+        rx, ry = c * dx - s * dy, s * dx + c * dy
+        np.add(self.x, rx, out=out[0])
+        np.add(self.y, ry, out=out[1])
+        if len(out) == 2:
+            return
+        w, e = self.omega, self.epsilon
+        np.subtract(self.vx, np.multiply(w, ry), out=out[2])
+        np.add(self.vy, np.multiply(w, rx), out=out[3])
+        w2 = w * w
+        np.subtract(self.ax, np.multiply(w2, rx), out=out[4])
+        np.subtract(self.ay, np.multiply(w2, ry), out=out[5])
+        if not (isinstance(e, float) and e == 0.0):  # a crank turning at a constant rate
+            np.subtract(out[4], np.multiply(e, ry), out=out[4])
+            np.add(out[5], np.multiply(e, rx), out=out[5])
+
     def angle(self) -> Values:
         """The rotation from the sketch, continuous along the poses."""
         if self._cos is None:

@@ -41,7 +41,7 @@ from . import branches, dyads
 from .equations import group_system
 from .errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import Frame, LinkTable
-from .newton import densified, follow, needs_continuation, scaled_jacobian
+from .newton import CONTINUATION_STEP, densified, follow, needs_continuation, scaled_jacobian
 from .plan import GroupStep, SolvePlan
 from .state import KinematicState, LinkState, Motion, PointState
 
@@ -162,13 +162,22 @@ def _checked(
     if len(inputs) < 2:
         return motion
     path = inputs
-    dense, _ = densified(plan, inputs)
-    if len(dense) > len(inputs):
+    if _largest_step(plan, inputs) > CONTINUATION_STEP and len(
+        dense := densified(plan, inputs)[0]
+    ) > len(inputs):
         path, watch = dense, []
         _precise_errors(plan, dense, lambda found: positions(dense, found), watch)
     if watch:
         branches.confirm_branches(plan, path, watch, positions)
     return motion
+
+
+def _largest_step(plan: SolvePlan, inputs: np.ndarray) -> float:
+    """The largest step between rows (and from the sketch to the first), in units of scale."""
+    scale = plan.driver_scale
+    first = float(np.max(np.abs(inputs[0]) / scale))
+    steps = np.abs(np.diff(inputs, axis=0))
+    return max(first, float(np.max(steps / scale)) if steps.size else 0.0)
 
 
 def _positions_of(plan: SolvePlan):
@@ -227,7 +236,7 @@ def _solve_poses(
     frames: dict[str, Frame] = {}
     q, qd, qdd = tables = tuple(LinkTable(frames, order, n) for order in ("q", "qd", "qdd"))
     _place_drivers(plan, inputs, frames, tables)
-    pins: dict = {}
+    pins = dyads.PinCache()
     for step in plan.steps:
         # looked up on the module at call time, so a test can switch a closed form off
         if dyads.frame_dyad(step, plan, frames, tables, pins, inputs, rates, watch):
@@ -244,10 +253,10 @@ def _solve_poses(
     q.setdefault(ground, zero)
     if not rates:
         empty: Mapping[str, np.ndarray] = MappingProxyType({})
-        return Motion(inputs, q, empty, empty, MappingProxyType(frames))
+        return Motion(inputs, q, empty, empty, MappingProxyType(frames), pins.on_frames())
     for table in (qd, qdd):
         table.setdefault(ground, zero)
-    return Motion(inputs, q, qd, qdd, MappingProxyType(frames))
+    return Motion(inputs, q, qd, qdd, MappingProxyType(frames), pins.on_frames())
 
 
 def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) -> None:

@@ -292,11 +292,15 @@ def _point_block(plan: SolvePlan, motion: Motion, rates: bool) -> dict[str, dict
 
 def _fill_point(motion: Motion, link: str, c: np.ndarray, rows: np.ndarray, rates: bool) -> None:
     """Write the motion of sketch point ``c`` of ``link`` into ``rows`` (1 or 3, 2, poses)."""
+    targets = tuple(rows[k // 2, k % 2] for k in range(6 if rates else 2))
+    found = motion.pins.get((link, float(c[0]), float(c[1])))
+    if found is not None:  # found by the solve from the link's frame: the same values
+        for target, value in zip(targets, found, strict=False):
+            target[...] = value
+        return
     frame = motion.frames.get(link)
     if frame is not None:
-        values = frame.point(c) if rates else frame.position(c)
-        for k, value in enumerate(values):
-            rows[k // 2, k % 2] = value
+        frame.point_into(c, targets)
         return
     if rates:
         x, v, a = motion.point(link, c)

@@ -161,30 +161,32 @@ def _watch_dips(solve: _FrameSolve, h2) -> None:
     ends = [k for k, j in ((0, 1), (len(h2) - 1, len(h2) - 2)) if h2[k] < h2[j]]
     if not len(low) and not ends:
         return
-    steps = []
+    k = np.concatenate([low, np.array(ends, dtype=int)])
+    c = np.clip(k, 1, len(h2) - 2)  # the middle of the three samples
     inputs = solve.inputs / solve.plan.driver_scale
-    for k in [*low.tolist(), *ends]:
-        c = min(max(k, 1), len(h2) - 2)
-        before = float(np.linalg.norm(inputs[c] - inputs[c - 1]))
-        after = float(np.linalg.norm(inputs[c + 1] - inputs[c]))
-        if _parabola_low(before, after, h2[c - 1], h2[c], h2[c + 1]):
-            steps.extend(j for j in (k - 1, k) if 0 <= j < len(h2) - 1)
-    if steps:
+    before = np.linalg.norm(inputs[c] - inputs[c - 1], axis=1)
+    after = np.linalg.norm(inputs[c + 1] - inputs[c], axis=1)
+    near = _parabola_low(before, after, h2[c - 1], h2[c], h2[c + 1])
+    if near.any():
+        steps = np.concatenate([k[near] - 1, k[near]])
+        steps = steps[(steps >= 0) & (steps < len(h2) - 1)]
         solve.watch.append((solve.step.label, np.unique(steps)))
 
 
-def _parabola_low(p: float, q: float, y0: float, y1: float, y2: float) -> bool:
+def _parabola_low(p, q, y0, y1, y2) -> np.ndarray:
     """Whether the parabola through (−p, y0), (0, y1), (q, y2) comes as low as the rise beside y1.
 
     The rise is how far the higher neighbour stands above ``y1``: a minimum
     that is well above it is a real one, which finer steps leave in place.
+    Arrays of as many triples as there are local minima.
     """
-    if p <= 0.0 or q <= 0.0:
-        return True
-    a = (q * (y0 - y1) + p * (y2 - y1)) / (p * q * (p + q))
-    b = (p * p * (y2 - y1) - q * q * (y0 - y1)) / (p * q * (p + q))
-    low = min(y0, y1, y2) if a <= 0.0 else min(y1 - b * b / (4.0 * a), y1)
-    return low <= max(y0, y2) - y1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        span = p * q * (p + q)
+        a = (q * (y0 - y1) + p * (y2 - y1)) / span
+        b = (p * p * (y2 - y1) - q * q * (y0 - y1)) / span
+        vertex = np.minimum(y1 - b * b / (4.0 * a), y1)
+    low = np.where(a > 0.0, vertex, np.minimum(np.minimum(y0, y1), y2))
+    return (low <= np.maximum(y0, y2) - y1) | (span <= 0.0)
 
 
 def _arrays(n: int, *values):

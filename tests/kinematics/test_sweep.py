@@ -290,3 +290,61 @@ def test_a_sweep_too_large_for_memory_is_refused_with_a_clear_message(tmp_path, 
     assert main(["sweep", str(path), "--steps", "30000000"]) == 1
     err = capsys.readouterr().err
     assert err.startswith("error: ") and "--steps" in err and "Traceback" not in err
+
+
+# ---------------------------------------------------------------- what a sweep returns (issue 12)
+
+
+def test_positions_only_sweep_gives_the_same_positions_and_nothing_more():
+    plan = make_plan(analyze(read_edgelist(_fixture("jansen.edges"))))
+    full = sweep(plan, steps=720)
+    bare = sweep(plan, steps=720, rates=False)
+    assert set(bare.points) == set(full.points)
+    for name, values in bare.points.items():
+        assert list(values) == ["position"]
+        np.testing.assert_array_equal(values["position"], full.points[name]["position"])
+    for name, values in bare.links.items():
+        assert list(values) == ["angle"]
+        np.testing.assert_array_equal(values["angle"], full.links[name]["angle"])
+    assert dict(bare.balancing) == {}
+
+
+def test_sweep_points_share_one_block_and_ground_points_are_constants():
+    plan = plan_of(CRANK_ROCKER)
+    result = sweep(plan, steps=16)
+    moving = [result.points[p]["position"] for p in "BC"]
+    assert moving[0].base is not None and moving[0].base is moving[1].base
+    a = result.points["A"]
+    np.testing.assert_array_equal(a["position"], np.zeros((16, 2)))
+    np.testing.assert_array_equal(a["velocity"], np.zeros((16, 2)))
+    assert not a["position"].flags.writeable
+    # the crank tip: B = A + 0.1·(cos φ, sin φ), v = 10·J·(B − A), a = −100·(B − A)
+    phi = result.inputs[:, 0]
+    r = 0.1 * np.column_stack([np.cos(phi), np.sin(phi)])
+    np.testing.assert_allclose(result.points["B"]["position"], r, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(
+        result.points["B"]["velocity"], 10 * np.column_stack([-r[:, 1], r[:, 0]]), atol=1e-14
+    )
+    np.testing.assert_allclose(result.points["B"]["acceleration"], -100 * r, atol=1e-13)
+
+
+def test_link_angles_and_transmission_are_computed_when_first_read(monkeypatch):
+    import kinematics.sweep as sweep_module
+
+    calls = []
+    real = sweep_module._angles
+    monkeypatch.setattr(sweep_module, "_angles", lambda *a: calls.append(1) or real(*a))
+    result = sweep(plan_of(CRANK_ROCKER), steps=36)
+    assert calls == []
+    assert len(result.transmission) == 1 and calls == [1]
+    # the coupler's angle read lazily is the rotation of BC from the sketch
+    b, c = result.points["B"]["position"], result.points["C"]["position"]
+    bc = c - b
+    turned = np.unwrap(np.arctan2(bc[:, 1], bc[:, 0]) - math.atan2(0.3, 0.2))
+    np.testing.assert_allclose(result.links["2"]["angle"], turned, atol=1e-12)
+
+
+def _fixture(name: str):
+    from ..conftest import FIXTURES
+
+    return FIXTURES / name

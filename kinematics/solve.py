@@ -253,7 +253,9 @@ def _solve_poses(
     q.setdefault(ground, zero)
     if not rates:
         empty: Mapping[str, np.ndarray] = MappingProxyType({})
-        return Motion(inputs, q, empty, empty, MappingProxyType(frames), pins.on_frames())
+        # positions only: the joints as the closed forms found them (the full solve carries
+        # them through their links' frames, as it always has: the two agree to rounding)
+        return Motion(inputs, q, empty, empty, MappingProxyType(frames), dict(pins))
     for table in (qd, qdd):
         table.setdefault(ground, zero)
     return Motion(inputs, q, qd, qdd, MappingProxyType(frames), pins.on_frames())

@@ -36,8 +36,10 @@ class Motion:
     :class:`~kinematics.frames.Frame` s; their ``q`` (which needs the angle's
     ``arctan2``) is computed the first time it is read, and :meth:`point`
     uses the frame directly. ``pins`` holds the points the solve found on
-    the way from a link's frame, ``(link, x, y) -> (x, y, vx, vy, ax, ay)``
-    (the rates None for positions only), so that they need not be found again.
+    the way from a link's frame, ``(link, x, y) -> (x, y, vx, vy, ax, ay)``,
+    so that they need not be found again; a solve of positions only (the
+    rates None) also holds the dyads' joints there, as their closed forms
+    found them (through a link's frame they agree to rounding).
     """
 
     inputs: np.ndarray

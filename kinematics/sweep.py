@@ -206,7 +206,9 @@ def sweep(
     By default each rotating driver makes one turn from the sketch in
     ``steps`` equal steps (a sliding driver stays at the sketch). With
     ``rates`` false only the positions are solved (points' ``position``, links'
-    ``angle``).
+    ``angle``); a dyad's joint is then the closed form's own value, which the
+    full sweep's (carried through a link's frame, as it always was) matches to
+    rounding.
 
     Raises
     ------

@@ -302,7 +302,9 @@ def test_positions_only_sweep_gives_the_same_positions_and_nothing_more():
     assert set(bare.points) == set(full.points)
     for name, values in bare.points.items():
         assert list(values) == ["position"]
-        np.testing.assert_array_equal(values["position"], full.points[name]["position"])
+        np.testing.assert_allclose(
+            values["position"], full.points[name]["position"], rtol=0, atol=1e-15
+        )
     for name, values in bare.links.items():
         assert list(values) == ["angle"]
         np.testing.assert_array_equal(values["angle"], full.links[name]["angle"])

@@ -100,6 +100,16 @@ class SolvePlan:
     contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
     rolling: tuple[GroupStep, ...] | None = None
 
+    @property
+    def driver_kinds(self) -> tuple[str, ...]:
+        """Each driver's kind, 'R' (turns) or 'P' (slides): how its inputs are printed."""
+        return tuple(d.kind for d in self.drivers)
+
+    @property
+    def driver_scale(self) -> np.ndarray:
+        """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size."""
+        return np.array([1.0 if d.kind == "R" else self.length for d in self.drivers])
+
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
     xy = mechanism.coordinates(name) if name is not None else None

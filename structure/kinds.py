@@ -1,7 +1,7 @@
 """The kinds of things in a mechanism: pairs, loads and dyads, as enums.
 
-:class:`PairKind` is a plain enum. :class:`LoadKind` and :class:`DyadKind`
-are :class:`TextEnum` s: each member is also the string it stands for, so it
+:class:`PairKind`, :class:`LoadKind` and :class:`DyadKind` are
+:class:`TextEnum` s: each member is also the string it stands for, so it
 prints, formats, compares, hashes and goes to JSON exactly as that string
 (``LoadKind.MASS == "mass"``, ``f"{DyadKind.RRR}" == "RRR"``), and code that
 still compares with the plain strings keeps working.
@@ -21,7 +21,22 @@ from enum import Enum
 __all__ = ["DyadKind", "LoadKind", "PairKind", "TextEnum"]
 
 
-class PairKind(Enum):
+class TextEnum(str, Enum):
+    """An enum whose members are their text: ``str``, ``format``, ``==`` and ``hash`` agree.
+
+    Only ``repr`` tells a member from its string.
+    """
+
+    def __str__(self) -> str:
+        return self.value
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec)
+
+    __hash__ = str.__hash__
+
+
+class PairKind(TextEnum):
     """Kind of a kinematic pair.
 
     ``R`` revolute and ``P`` prismatic are lower pairs of class 5 (P5, two
@@ -37,21 +52,6 @@ class PairKind(Enum):
     def constraints(self) -> int:
         """Number of scalar constraints the pair imposes in the plane."""
         return 1 if self is PairKind.H else 2
-
-
-class TextEnum(str, Enum):
-    """An enum whose members are their text: ``str``, ``format``, ``==`` and ``hash`` agree.
-
-    Only ``repr`` tells a member from its string.
-    """
-
-    def __str__(self) -> str:
-        return self.value
-
-    def __format__(self, spec: str) -> str:
-        return format(self.value, spec)
-
-    __hash__ = str.__hash__
 
 
 class LoadKind(TextEnum):

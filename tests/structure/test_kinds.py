@@ -52,7 +52,8 @@ def test_load_kinds_know_their_statement():
     assert LoadKind.MASS.usage == "mass LINK m J S"
 
 
-def test_pair_kind_is_still_a_plain_enum():
-    assert not isinstance(PairKind.R, str)
+def test_pair_kind_is_its_letter_like_the_other_kinds():
+    """A driver's kind (R turns, P slides) is a PairKind and still reads as its letter."""
+    assert PairKind.R == "R" and f"{PairKind.P}" == "P" and str(PairKind.H) == "H"
     assert PairKind("H").constraints == 1
     assert PairKind.R.constraints == 2

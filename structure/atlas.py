@@ -349,19 +349,28 @@ class SummaryLine:
     errors: int = 0
 
 
-def atlas_summary(rows: Iterable[AtlasRow]) -> tuple[SummaryLine, ...]:
-    """Chains and mechanisms per link count and Assur class (rows of distinct or labelled runs)."""
-    seen: dict[tuple[int, int, int], AtlasRow] = {}
+def _number(value: Any) -> int | None:
+    """An integer cell (JSON lines: a number; CSV: its text; empty: None)."""
+    return None if value is None or value == "" else int(value)
+
+
+def atlas_summary(rows: Iterable[Mapping[str, Any]]) -> tuple[SummaryLine, ...]:
+    """Chains and mechanisms per link count and Assur class.
+
+    ``rows`` are atlas rows as data (:func:`atlas_row_dict`, or read back from
+    JSON lines or CSV), of a distinct or a labelled run.
+    """
+    seen: dict[tuple[int, int, int], int] = {}
     labelled: dict[tuple[int, int, int], int] = {}
     for row in rows:
-        key = (row.links, row.chain_index, row.orbit)
-        seen.setdefault(key, row)
-        labelled[key] = labelled.get(key, 0) + row.multiplicity
+        key = (int(row["links"]), int(row["chain_index"]), int(row["orbit"]))
+        seen.setdefault(key, _number(row["mechanism_class"]) or 0)
+        labelled[key] = labelled.get(key, 0) + int(row["multiplicity"])
     tally: dict[tuple[int, int | None], list[Any]] = {}
-    for key, row in seen.items():
-        for cls in (None, row.mechanism_class or 0):
-            entry = tally.setdefault((row.links, cls), [set(), 0, 0])
-            entry[0].add(row.chain_index)
+    for key, assur_class in seen.items():
+        for cls in (None, assur_class):
+            entry = tally.setdefault((key[0], cls), [set(), 0, 0])
+            entry[0].add(key[1])
             entry[1] += 1
             entry[2] += labelled[key]
     out = []
@@ -378,7 +387,7 @@ def atlas_summary(rows: Iterable[AtlasRow]) -> tuple[SummaryLine, ...]:
 def format_summary(lines: Sequence[SummaryLine], left_out: Mapping[int, int] | None = None) -> str:
     """The summary as a Markdown table; ``left_out`` gives the degenerate chains per link count.
 
-    >>> print(format_summary(atlas_summary(atlas(4))), end="")
+    >>> print(format_summary(atlas_summary(map(atlas_row_dict, atlas(4)))), end="")
     | links | class | chains | mechanisms | labelled choices |
     |---:|:---|---:|---:|---:|
     | 4 | all | 1 | 1 | 8 |

@@ -68,7 +68,7 @@ class KinematicChain:
     links: int
     joints: tuple[Joint, ...]
     code: str
-    generators: tuple[tuple[int, ...], ...] = field(repr=False)
+    generators: tuple[tuple[int, ...], ...] = field(repr=False, compare=False)
 
     @property
     def dof(self) -> int:
@@ -515,29 +515,48 @@ def enumerate_chains(
 
 @dataclass(frozen=True, slots=True)
 class ChainCounts:
-    """Chains of a link count and DOF: non-degenerate (the atlas) and degenerate."""
+    """How many chains a link count and DOF have.
+
+    ``chains`` are the non-degenerate ones (the atlas), ``fractionated`` how many of
+    them one link cuts in two; ``degenerate`` the chains with a rigid subchain,
+    ``degenerate_fractionated`` how many of those have a cut link too;
+    ``inversions`` the choices of ground link on the non-degenerate chains, up to
+    their symmetry.
+    """
 
     links: int
     dof: int
     chains: int
-    degenerate: int
     fractionated: int
+    degenerate: int
+    degenerate_fractionated: int
+    inversions: int
 
 
 def count_chains(links: int, dof: int = 1) -> ChainCounts:
-    """How many chains there are, split into non-degenerate, degenerate and fractionated.
+    """Count the chains of ``links`` links and ``dof`` degrees of freedom, by kind.
 
-    ``fractionated`` counts the non-degenerate chains that one link cuts in two.
+    pyslvs's atlas has no chain with a cut link: its 40 eight-link chains are the
+    16 non-degenerate ones and the 24 degenerate ones without a cut link.
 
-    >>> count_chains(8)
-    ChainCounts(links=8, dof=1, chains=16, degenerate=55, fractionated=0)
+    >>> c = count_chains(8)
+    >>> c.chains, c.degenerate, c.degenerate_fractionated
+    (16, 55, 31)
     """
     joints = joint_count(links, dof)
-    chains = degenerate = fractionated = 0
+    tally = {(bad, cut): 0 for bad in (False, True) for cut in (False, True)}
+    inversions = 0
     for candidate in _candidate_chains(links, joints, True):
-        if is_degenerate(links, candidate):
-            degenerate += 1
-        else:
-            chains += 1
-            fractionated += _has_cut_vertex(links, candidate)
-    return ChainCounts(links, dof, chains, degenerate, fractionated)
+        key = (is_degenerate(links, candidate), _has_cut_vertex(links, candidate))
+        tally[key] += 1
+        if not key[0]:
+            inversions += len(_canonical_chain(links, candidate).link_orbits)
+    return ChainCounts(
+        links,
+        dof,
+        tally[False, False] + tally[False, True],
+        tally[False, True],
+        tally[True, False] + tally[True, True],
+        tally[True, True],
+        inversions,
+    )

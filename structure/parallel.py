@@ -96,7 +96,7 @@ def _dask_client(scheduler: str | None, dask_local: int) -> Any:
     if scheduler:
         return Client(scheduler)
     cluster = LocalCluster(
-        n_workers=dask_local, threads_per_worker=1, processes=True, dashboard_address=None
+        n_workers=dask_local, threads_per_worker=1, processes=True, dashboard_address=":0"
     )
     return Client(cluster)
 

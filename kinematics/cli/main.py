@@ -46,6 +46,8 @@ from ..serialization import (
 )
 from ..solve import solve_pose
 from ..sweep import read_inputs, sweep
+from . import atlas as atlas_command
+from . import batch as batch_command
 
 __all__ = ["main"]
 
@@ -152,6 +154,12 @@ def _parser() -> argparse.ArgumentParser:
     )
     for command in (classify, kin, fo):
         _add_explain(command)
+    atlas_command.add_arguments(
+        sub.add_parser("atlas", help="every chain of N links and F DOF, every mechanism classified")
+    )
+    batch_command.add_arguments(
+        sub.add_parser("classify-batch", help="classify many files, directories or globs at once")
+    )
     return parser
 
 
@@ -607,6 +615,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _gears(args)
     if args.command == "animate":
         return _animate(args)
+    if args.command == "atlas":
+        return atlas_command.run(args)
+    if args.command == "classify-batch":
+        return batch_command.run(args)
     parser.error(f"unknown command {args.command}")
     return 2
 

@@ -5,10 +5,12 @@ from __future__ import annotations
 import csv
 import io
 import json
+import sys
 
 import pytest
 
 from kinematics.cli.main import main
+from kinematics.cli.tables import progress_bar
 from structure.atlas import ATLAS_COLUMNS
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
@@ -125,3 +127,26 @@ def test_parquet(tmp_path, capsys):
     table = pq.read_table(out)
     assert table.column_names == [name for name, _ in ATLAS_COLUMNS]
     assert sum(table.column("multiplicity").to_pylist()) == 320
+
+
+def test_progress_bar_only_on_a_terminal(monkeypatch):
+    update, close = progress_bar(10, "chain")
+    assert update is None  # stderr is captured, not a terminal
+    close()
+
+    class Terminal(io.StringIO):
+        def isatty(self) -> bool:
+            return True
+
+    terminal = Terminal()
+    monkeypatch.setattr(sys, "stderr", terminal)
+    monkeypatch.setitem(sys.modules, "tqdm", None)
+    update, close = progress_bar(10, "chain")
+    assert update is None and "assur[progress]" in terminal.getvalue()
+    monkeypatch.delitem(sys.modules, "tqdm")
+    pytest.importorskip("tqdm")
+    update, close = progress_bar(10, "chain")
+    update(4)
+    update(10)
+    close()
+    assert "10/10" in terminal.getvalue()

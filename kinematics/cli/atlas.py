@@ -206,7 +206,9 @@ def _run_atlas(args: argparse.Namespace, chains: dict[int, Sequence[KinematicCha
         if handle is not None and handle is not sys.stdout:
             handle.close()
     if args.summary:
-        left_out = {n: count_chains(n, args.dof).degenerate for n in chains}
+        left_out = None
+        if not args.degenerate:
+            left_out = {n: count_chains(n, args.dof).degenerate for n in chains}
         sys.stdout.write(format_summary(atlas_summary(summary_rows), left_out))
     return 0
 

@@ -26,6 +26,11 @@ Item = TypeVar("Item")
 Result = TypeVar("Result")
 
 
+#: chunks in flight per Dask worker: enough that no worker waits while the client
+#: takes the results in order
+_IN_FLIGHT = 32
+
+
 class MissingExtraError(ImportError):
     """An optional dependency is not installed; the message says how to install it."""
 
@@ -114,7 +119,7 @@ def _dask_map(
         window: deque = deque()
         for part in _chunks(items, chunk):
             window.append(client.submit(_apply_chunk, function, part, pure=False))
-            if len(window) >= 4 * workers:
+            if len(window) >= _IN_FLIGHT * workers:
                 yield from window.popleft().result()
         while window:
             yield from window.popleft().result()

@@ -62,7 +62,7 @@ class KinematicChain:
     ``joints`` are ``(i, j)`` pairs of links ``0 .. links-1`` with ``i < j``, sorted;
     ``code`` is the graph6 string of that labelled graph, the same for every
     isomorphic chain; ``generators`` generate its automorphism group (permutations
-    of the links).
+    of the links; one generating set among many, so equality ignores them).
     """
 
     links: int

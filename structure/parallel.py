@@ -101,7 +101,11 @@ def _dask_client(scheduler: str | None, dask_local: int) -> Any:
     if scheduler:
         return Client(scheduler)
     cluster = LocalCluster(
-        n_workers=dask_local, threads_per_worker=1, processes=True, dashboard_address=":0"
+        n_workers=dask_local,
+        threads_per_worker=1,
+        processes=True,
+        host="127.0.0.1",
+        dashboard_address="127.0.0.1:0",
     )
     return Client(cluster)
 

@@ -44,7 +44,11 @@ def test_dask_missing_is_a_clear_message(monkeypatch, capsys):
 def scheduler():
     distributed = pytest.importorskip("dask.distributed")
     cluster = distributed.LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
+        n_workers=2,
+        threads_per_worker=1,
+        processes=True,
+        host="127.0.0.1",
+        dashboard_address="127.0.0.1:0",
     )
     try:
         yield cluster.scheduler_address

@@ -5,7 +5,8 @@ imported), so an import inside a function counts as much as one at the top.
 Floors, from the bottom:
 
 - ``structure``: the analysis (model, validation, rigidity, mobility,
-  replacement, assur, report, ...) < ``structure.readwrite`` < ``structure.explain``;
+  replacement, assur, report, chains, ...) < ``structure.readwrite`` and the
+  many-mechanism jobs that read and write (``atlas``, ``batch``) < ``structure.explain``;
 - ``kinematics``: the solvers (plan, solve, sweep, forces, gears, ...) <
   ``kinematics.explain`` and ``kinematics.figures`` < ``kinematics.cli``;
 - ``structure`` < ``kinematics``: structure never imports kinematics;
@@ -86,7 +87,7 @@ def _floor(module: str) -> tuple[str, int]:
     if len(parts) == 1:  # the package root is the façade that re-exports the public API
         return package, 3
     if package == "structure":
-        return package, {"readwrite": 1, "explain": 2}.get(sub, 0)
+        return package, {"readwrite": 1, "atlas": 1, "batch": 1, "explain": 2}.get(sub, 0)
     return package, {"explain": 1, "figures": 1, "cli": 2, "__main__": 2}.get(sub, 0)
 
 

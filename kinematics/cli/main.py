@@ -31,6 +31,7 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "sweep": ("motion", "run_sweep"),
     "animate": ("motion", "run_animate"),
     "convert": ("convert", "run"),
+    "atlas": ("atlas", "run"),
 }
 
 

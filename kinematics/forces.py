@@ -357,6 +357,9 @@ def _group_reactions(
     (farther from the drivers) pass on; the group's reactions on its known
     links are added to ``carried`` for the groups solved after it.
     """
+    closed = _closed_dyad(step, motion, applied, carried, m)
+    if closed is not None:
+        return closed
     n = motion.inputs.shape[0]
     zero3 = np.zeros((n, 3))
     links = step.links
@@ -384,6 +387,177 @@ def _group_reactions(
             if link not in index:
                 carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
     return _reactions(parts, lam, m)
+
+
+def _position(motion: Motion, ground: str, link: str, c: np.ndarray) -> tuple:
+    """World ``(x, y)`` of sketch point ``c`` on ``link`` (arrays (N,) or floats)."""
+    if link == ground:
+        return float(c[0]), float(c[1])
+    frame = motion.frames.get(link)
+    if frame is not None:
+        return frame.position(c)
+    q = motion.q[link]
+    cos, sin = np.cos(q[:, 2]), np.sin(q[:, 2])
+    cx, cy = float(c[0]), float(c[1])
+    return q[:, 0] + cos * cx - sin * cy, q[:, 1] + sin * cx + cos * cy
+
+
+def _turning(motion: Motion, ground: str, link: str) -> tuple:
+    """The cosine and sine of ``link``'s rotation from the sketch."""
+    if link == ground:
+        return 1.0, 0.0
+    frame = motion.frames.get(link)
+    if frame is not None:
+        return frame.cos, frame.sin
+    theta = motion.q[link][:, 2]
+    return np.cos(theta), np.sin(theta)
+
+
+_ORIGIN = np.zeros(2)
+
+
+def _load_about(motion: Motion, ground: str, link: str, total: np.ndarray, px, py) -> tuple:
+    """A link's generalized load (about its frame origin) as ``(Fx, Fy, M about (px, py))``."""
+    ox, oy = _position(motion, ground, link, _ORIGIN)
+    fx, fy = total[:, 0], total[:, 1]
+    return fx, fy, total[:, 2] + (ox - px) * fy - (oy - py) * fx
+
+
+def _carry(
+    motion: Motion, m: Mechanism, carried: dict, link: str, fx, fy, px, py, couple=0.0
+) -> None:
+    """Add the force ``(fx, fy)`` at ``(px, py)`` (and a couple) on a known link to ``carried``."""
+    if link == m.ground:
+        return
+    n = motion.inputs.shape[0]
+    ox, oy = _position(motion, m.ground, link, _ORIGIN)
+    value = np.empty((n, 3))
+    value[:, 0] = fx
+    value[:, 1] = fy
+    value[:, 2] = (px - ox) * fy - (py - oy) * fx + couple
+    if link in carried:
+        carried[link] = carried[link] + value
+    else:
+        carried[link] = value
+
+
+def _closed_dyad(
+    step: GroupStep,
+    motion: Motion,
+    applied: Mapping[str, np.ndarray],
+    carried: dict[str, np.ndarray],
+    m: Mechanism,
+) -> list | None:
+    """An RRR or RRP dyad's reactions in closed form, vectorised; None for any other group.
+
+    The same equilibrium as the dense solve, ``Jᵀ·λ = −Q``, worked out by hand:
+    the moments about the inner pin of one link and the forces on both give
+    the outer reactions by a 2×2 Cramer rule (RRR) or the slide's normal force
+    by one division (RRP). The reactions come in the order of the equations.
+    """
+    if step.kind not in ("RRR", "RRP") or len(step.links) != 2:
+        return None
+    links = step.links
+    inner = [eq for eq in step.equations if eq.a in links and eq.b in links]
+    if len(inner) != 1 or inner[0].kind != "HINGE":
+        return None
+    n = motion.inputs.shape[0]
+    zero3 = np.zeros((n, 3))
+    total = {x: applied.get(x, zero3) + carried.get(x, zero3) for x in links}
+    solve = _rrr_forces if step.kind == "RRR" else _rrp_forces
+    forces = solve(step, motion, total, carried, m, inner[0])
+    if forces is None:
+        return None
+    out = []
+    for eq in step.equations:
+        if eq.kind == "ANGLE":
+            continue
+        fx, fy, couple = forces[id(eq)]
+        value = np.empty((n, 2))
+        value[:, 0] = fx
+        value[:, 1] = fy
+        kind = "R" if eq.kind == "HINGE" else "P"
+        out.append((equation_point(m, eq), (eq.a, eq.b), kind, value, np.broadcast_to(
+            np.asarray(couple, dtype=float), (n,)).copy()))
+    return out
+
+
+def _outer(step: GroupStep, inner: Equation, link: str, kind: str) -> Equation | None:
+    """The equation of ``link``'s outer pair of ``kind`` (HINGE or SLIDE), if it has one."""
+    found = [
+        eq for eq in step.equations if eq is not inner and link in (eq.a, eq.b) and eq.kind == kind
+    ]
+    return found[0] if len(found) == 1 else None
+
+
+def _rrr_forces(step, motion, total, carried, m, inner) -> dict | None:
+    """RRR: the force on each link at its outer pin from ``u × R_A = a``, ``w × R_A = b``."""
+    l1, l2 = step.links
+    ea, ec = _outer(step, inner, l1, "HINGE"), _outer(step, inner, l2, "HINGE")
+    if ea is None or ec is None or len(step.equations) != 3:
+        return None
+    ground = m.ground
+    bx, by = _position(motion, ground, l1, inner.point)
+    ax, ay = _position(motion, ground, l1, ea.point)
+    cx, cy = _position(motion, ground, l2, ec.point)
+    f1x, f1y, m1 = _load_about(motion, ground, l1, total[l1], bx, by)
+    f2x, f2y, m2 = _load_about(motion, ground, l2, total[l2], bx, by)
+    ux, uy, wx, wy = ax - bx, ay - by, cx - bx, cy - by
+    fx, fy = f1x + f2x, f1y + f2y
+    rhs_a = -m1
+    rhs_b = m2 - (wx * fy - wy * fx)
+    det = ux * wy - uy * wx
+    rax = (rhs_a * wx - ux * rhs_b) / det  # on l1 from its known link, at A
+    ray = (wy * rhs_a - uy * rhs_b) / det
+    rcx, rcy = -fx - rax, -fy - ray  # on l2 from its known link, at C
+    rbx, rby = -f1x - rax, -f1y - ray  # on l1 from l2, at B
+    out = {}
+    for eq, link, (gx, gy), (px, py) in (
+        (ea, l1, (rax, ray), (ax, ay)),
+        (ec, l2, (rcx, rcy), (cx, cy)),
+    ):
+        other = eq.b if eq.a == link else eq.a
+        _carry(motion, m, carried, other, -gx, -gy, px, py)
+        out[id(eq)] = (gx, gy, 0.0) if eq.b == link else (-gx, -gy, 0.0)
+    out[id(inner)] = (rbx, rby, 0.0) if inner.b == l1 else (-rbx, -rby, 0.0)
+    return out
+
+
+def _rrp_forces(step, motion, total, carried, m, inner) -> dict | None:
+    """RRP: the slide's normal force from the rod's moments about the inner pin, then the rest."""
+    rod = next((x for x in step.links if _outer(step, inner, x, "HINGE") is not None), None)
+    slider = next((x for x in step.links if _outer(step, inner, x, "SLIDE") is not None), None)
+    if rod is None or slider is None or rod == slider or len(step.equations) != 4:
+        return None
+    er, es = _outer(step, inner, rod, "HINGE"), _outer(step, inner, slider, "SLIDE")
+    angle = next((eq for eq in step.equations if eq.kind == "ANGLE"), None)
+    if angle is None or {angle.a, angle.b} != {es.a, es.b}:
+        return None
+    ground = m.ground
+    cx, cy = _position(motion, ground, rod, inner.point)
+    bx, by = _position(motion, ground, rod, er.point)
+    sx, sy = _position(motion, ground, es.b, es.point)  # the slide's force acts at p_b
+    cos, sin = _turning(motion, ground, slider)
+    nx = cos * float(es.normal[0]) - sin * float(es.normal[1])
+    ny = sin * float(es.normal[0]) + cos * float(es.normal[1])
+    frx, fry, mr = _load_about(motion, ground, rod, total[rod], cx, cy)
+    fsx, fsy, ms = _load_about(motion, ground, slider, total[slider], cx, cy)
+    ux, uy = bx - cx, by - cy
+    fx, fy = frx + fsx, fry + fsy
+    normal = (mr - (ux * fy - uy * fx)) / (ux * ny - uy * nx)  # on the slider, along n
+    rbx, rby = -fx - normal * nx, -fy - normal * ny  # on the rod from its known link, at B
+    rcx, rcy = -frx - rbx, -fry - rby  # on the rod from the slider, at C
+    gx, gy = normal * nx, normal * ny
+    couple = -ms - ((sx - cx) * gy - (sy - cy) * gx)  # on the slider, besides
+    guide = es.a if es.b == slider else es.b
+    _carry(motion, m, carried, guide, -gx, -gy, sx, sy, -couple)
+    other = er.b if er.a == rod else er.a
+    _carry(motion, m, carried, other, -rbx, -rby, bx, by)
+    return {
+        id(er): (rbx, rby, 0.0) if er.b == rod else (-rbx, -rby, 0.0),
+        id(inner): (rcx, rcy, 0.0) if inner.b == rod else (-rcx, -rcy, 0.0),
+        id(es): (gx, gy, couple) if es.b == slider else (-gx, -gy, -couple),
+    }
 
 
 def _driver_balance(

@@ -148,36 +148,50 @@ def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
     for load in m.loads:
         if load.kind == "gravity":
             gravity = np.array(load.values)
-
-    def lever(link: str, point: str | None) -> np.ndarray:
-        if point is None or m.coordinates(point) is None:
-            raise MechanismError(f"point {point} of a load on link {link} needs coordinates")
-        c = np.array(m.coordinates(point), dtype=float)
-        return rotate_many(motion.q[link][:, 2], c)
-
-    def add(link: str, fx: np.ndarray, fy: np.ndarray, moment: np.ndarray) -> None:
-        value = np.column_stack([np.broadcast_to(fx, n), np.broadcast_to(fy, n), moment])
-        out[link] = out.get(link, np.zeros((n, 3))) + value
-
     for load in m.loads:
+        if load.kind not in ("force", "moment", "mass"):
+            continue
+        link = load.link
+        if link not in out:
+            out[link] = np.zeros((n, 3))
+        total = out[link]
+        if load.kind == "moment":
+            total[:, 2] += load.values[0]
+            continue
+        c = _load_point(m, load)
+        ox, oy = _position(motion, m.ground, link, _ORIGIN)
         if load.kind == "force":
-            r = lever(load.link, load.point)
-            fx, fy = load.values
-            add(load.link, fx, fy, r[:, 0] * fy - r[:, 1] * fx)
-        elif load.kind == "moment":
-            add(load.link, 0.0, 0.0, np.full(n, load.values[0]))
-        elif load.kind == "mass":
-            mass, inertia = load.values
-            link = load.link
-            r = lever(link, load.point)
-            v, a = motion.qd[link], motion.qdd[link]
-            w, e = v[:, 2:3], a[:, 2:3]
-            jr = perpendicular(r)
-            a_s = a[:, :2] + e * jr - w**2 * r
-            f = mass * (gravity - a_s)
-            moment = cross(r, f) - inertia * e[:, 0]
-            add(link, f[:, 0], f[:, 1], moment)
+            sx, sy = _position(motion, m.ground, link, c)
+            fx, fy = float(load.values[0]), float(load.values[1])
+            total[:, 0] += fx
+            total[:, 1] += fy
+            total[:, 2] += (sx - ox) * fy - (sy - oy) * fx
+            continue
+        mass, inertia = load.values
+        sx, sy, ax, ay, epsilon = _point_acceleration(motion, m.ground, link, c)
+        fx = mass * (gravity[0] - ax)
+        fy = mass * (gravity[1] - ay)
+        total[:, 0] += fx
+        total[:, 1] += fy
+        total[:, 2] += (sx - ox) * fy - (sy - oy) * fx - inertia * epsilon
     return out
+
+
+def _load_point(m: Mechanism, load: Load) -> np.ndarray:
+    """The sketch coordinates of a load's point."""
+    if load.point is None or m.coordinates(load.point) is None:
+        raise MechanismError(f"point {load.point} of a load on link {load.link} needs coordinates")
+    return np.array(m.coordinates(load.point), dtype=float)
+
+
+def _point_acceleration(motion: Motion, ground: str, link: str, c: np.ndarray) -> tuple:
+    """``(x, y, ax, ay, ε)`` of sketch point ``c`` on ``link`` and the link's ε."""
+    frame = motion.frames.get(link)
+    if frame is not None:
+        x, y, _, _, ax, ay = frame.point(c)
+        return x, y, ax, ay, frame.epsilon
+    x, _, a = motion.point(link, c)
+    return x[:, 0], x[:, 1], a[:, 0], a[:, 1], motion.qdd[link][:, 2]
 
 
 def _parts(eq: Equation, motion: Motion) -> tuple[np.ndarray, np.ndarray]:
@@ -330,6 +344,14 @@ def _forces_once(
     power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
     for d in plan.drivers:
         load = balance.get(d.link)
+        crank = _crank_balance(plan, motion, d, load, applied, carried)
+        if crank is not None:
+            reaction, moment = crank
+            reactions.append(reaction)
+            moments[d.link] = moment
+            power.append(moment * motion.qd[d.link][:, 2])
+            order.append(f"I({d.link})")
+            continue
         parts, lam, drive = _driver_balance(plan, motion, d, load, applied, carried)
         reactions.extend(_reactions(parts, lam[:, :-1], m))
         if load is not None:
@@ -558,6 +580,37 @@ def _rrp_forces(step, motion, total, carried, m, inner) -> dict | None:
         id(inner): (rcx, rcy, 0.0) if inner.b == rod else (-rcx, -rcy, 0.0),
         id(es): (gx, gy, couple) if es.b == slider else (-gx, -gy, -couple),
     }
+
+
+def _crank_balance(
+    plan: SolvePlan,
+    motion: Motion,
+    driver: DriverStep,
+    load: Load | None,
+    applied: Mapping[str, np.ndarray],
+    carried: Mapping[str, np.ndarray],
+) -> tuple[tuple, np.ndarray] | None:
+    """A crank pinned to the ground, balanced by its motor: its reaction and moment, closed form.
+
+    The pin takes the whole force on the crank, the motor the whole moment
+    about the pin. None for any other driver (a slide, a ``balance`` load).
+    """
+    if driver.kind != "R" or load is not None:
+        return None
+    equations = ground_equations(plan, driver.link)
+    eq = equations[0]
+    if len(equations) != 1 or eq.kind != "HINGE" or eq.a != driver.link:
+        return None
+    m = plan.mechanism
+    n = motion.inputs.shape[0]
+    total = applied.get(driver.link, np.zeros((n, 3))) + carried.get(driver.link, np.zeros((n, 3)))
+    px, py = float(eq.point[0]), float(eq.point[1])
+    fx, fy, about_pin = _load_about(motion, m.ground, driver.link, total, px, py)
+    force = np.empty((n, 2))
+    force[:, 0] = fx  # what the crank exerts on the ground
+    force[:, 1] = fy
+    reaction = (equation_point(m, eq), (eq.a, eq.b), "R", force, np.zeros(n))
+    return reaction, -about_pin
 
 
 def _driver_balance(

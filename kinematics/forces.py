@@ -139,9 +139,10 @@ class ForceSweep:
     friction_loss: np.ndarray | None = None
 
 
-def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
+def _applied(plan: SolvePlan, where: _Where) -> dict[str, np.ndarray]:
     """Generalized applied and inertia loads (Fx, Fy, moment about the frame origin), (N, 3)."""
     m = plan.mechanism
+    motion = where.motion
     n = motion.inputs.shape[0]
     out: dict[str, np.ndarray] = {}
     gravity = np.zeros(2)
@@ -159,9 +160,9 @@ def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
             total[:, 2] += load.values[0]
             continue
         c = _load_point(m, load)
-        ox, oy = _position(motion, m.ground, link, _ORIGIN)
+        ox, oy = where.position(link, _ORIGIN)
         if load.kind == "force":
-            sx, sy = _position(motion, m.ground, link, c)
+            sx, sy = where.position(link, c)
             fx, fy = float(load.values[0]), float(load.values[1])
             total[:, 0] += fx
             total[:, 1] += fy
@@ -188,7 +189,8 @@ def _point_acceleration(motion: Motion, ground: str, link: str, c: np.ndarray) -
     """``(x, y, ax, ay, ε)`` of sketch point ``c`` on ``link`` and the link's ε."""
     frame = motion.frames.get(link)
     if frame is not None:
-        x, y, _, _, ax, ay = frame.point(c)
+        found = motion.pins.get((link, float(c[0]), float(c[1])))
+        x, y, _, _, ax, ay = found if found is not None else frame.point(c)
         return x, y, ax, ay, frame.epsilon
     x, _, a = motion.point(link, c)
     return x[:, 0], x[:, 1], a[:, 0], a[:, 1], motion.qdd[link][:, 2]
@@ -329,14 +331,15 @@ def _forces_once(
         )
     m = plan.mechanism
     n = motion.inputs.shape[0]
-    applied = _applied(plan, motion)
+    where = _Where.of(motion, m.ground)
+    applied = _applied(plan, where)
     for link, value in extra.items():
         applied[link] = applied.get(link, np.zeros((n, 3))) + value
     carried: dict[str, np.ndarray] = {}
     reactions: list = []
     order: list[str] = []
     for step in reversed(plan.steps):
-        reactions.extend(_group_reactions(step, motion, applied, carried, m))
+        reactions.extend(_group_reactions(step, where, applied, carried, m))
         order.append(step.label)
     moments: dict[str, np.ndarray] = {}
     balancing_force = None
@@ -344,7 +347,7 @@ def _forces_once(
     power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
     for d in plan.drivers:
         load = balance.get(d.link)
-        crank = _crank_balance(plan, motion, d, load, applied, carried)
+        crank = _crank_balance(plan, where, d, load, applied, carried)
         if crank is not None:
             reaction, moment = crank
             reactions.append(reaction)
@@ -368,7 +371,7 @@ def _forces_once(
 
 def _group_reactions(
     step: GroupStep,
-    motion: Motion,
+    where: _Where,
     applied: Mapping[str, np.ndarray],
     carried: dict[str, np.ndarray],
     m: Mechanism,
@@ -379,9 +382,10 @@ def _group_reactions(
     (farther from the drivers) pass on; the group's reactions on its known
     links are added to ``carried`` for the groups solved after it.
     """
-    closed = _closed_dyad(step, motion, applied, carried, m)
+    closed = _closed_dyad(step, where, applied, carried, m)
     if closed is not None:
         return closed
+    motion = where.motion
     n = motion.inputs.shape[0]
     zero3 = np.zeros((n, 3))
     links = step.links
@@ -411,48 +415,71 @@ def _group_reactions(
     return _reactions(parts, lam, m)
 
 
-def _position(motion: Motion, ground: str, link: str, c: np.ndarray) -> tuple:
-    """World ``(x, y)`` of sketch point ``c`` on ``link`` (arrays (N,) or floats)."""
-    if link == ground:
-        return float(c[0]), float(c[1])
-    frame = motion.frames.get(link)
-    if frame is not None:
-        return frame.position(c)
-    q = motion.q[link]
-    cos, sin = np.cos(q[:, 2]), np.sin(q[:, 2])
-    cx, cy = float(c[0]), float(c[1])
-    return q[:, 0] + cos * cx - sin * cy, q[:, 1] + sin * cx + cos * cy
+@dataclass(frozen=True)
+class _Where:
+    """Where the links' points are over a solved motion, each point found once per pass.
 
+    ``found`` maps ``(link, x, y)`` (sketch) to world ``(x, y)``; it starts
+    from the pins the solve found (:attr:`Motion.pins`).
+    """
 
-def _turning(motion: Motion, ground: str, link: str) -> tuple:
-    """The cosine and sine of ``link``'s rotation from the sketch."""
-    if link == ground:
-        return 1.0, 0.0
-    frame = motion.frames.get(link)
-    if frame is not None:
-        return frame.cos, frame.sin
-    theta = motion.q[link][:, 2]
-    return np.cos(theta), np.sin(theta)
+    motion: Motion
+    ground: str
+    found: dict = field(default_factory=dict)
+
+    @classmethod
+    def of(cls, motion: Motion, ground: str) -> _Where:
+        return cls(motion, ground, {k: v[:2] for k, v in motion.pins.items()})
+
+    def position(self, link: str, c: np.ndarray) -> tuple:
+        """World ``(x, y)`` of sketch point ``c`` on ``link`` (arrays (N,) or floats)."""
+        cx, cy = float(c[0]), float(c[1])
+        if link == self.ground:
+            return cx, cy
+        key = (link, cx, cy)
+        value = self.found.get(key)
+        if value is None:
+            value = self.found[key] = self._solved(link, c)
+        return value
+
+    def _solved(self, link: str, c: np.ndarray) -> tuple:
+        frame = self.motion.frames.get(link)
+        if frame is not None:
+            if float(frame.ref[0]) == float(c[0]) and float(frame.ref[1]) == float(c[1]):
+                return frame.x, frame.y
+            return frame.position(c)
+        q = self.motion.q[link]
+        cos, sin = np.cos(q[:, 2]), np.sin(q[:, 2])
+        cx, cy = float(c[0]), float(c[1])
+        return q[:, 0] + cos * cx - sin * cy, q[:, 1] + sin * cx + cos * cy
+
+    def turning(self, link: str) -> tuple:
+        """The cosine and sine of ``link``'s rotation from the sketch."""
+        if link == self.ground:
+            return 1.0, 0.0
+        frame = self.motion.frames.get(link)
+        if frame is not None:
+            return frame.cos, frame.sin
+        theta = self.motion.q[link][:, 2]
+        return np.cos(theta), np.sin(theta)
 
 
 _ORIGIN = np.zeros(2)
 
 
-def _load_about(motion: Motion, ground: str, link: str, total: np.ndarray, px, py) -> tuple:
+def _load_about(where: _Where, link: str, total: np.ndarray, px, py) -> tuple:
     """A link's generalized load (about its frame origin) as ``(Fx, Fy, M about (px, py))``."""
-    ox, oy = _position(motion, ground, link, _ORIGIN)
+    ox, oy = where.position(link, _ORIGIN)
     fx, fy = total[:, 0], total[:, 1]
     return fx, fy, total[:, 2] + (ox - px) * fy - (oy - py) * fx
 
 
-def _carry(
-    motion: Motion, m: Mechanism, carried: dict, link: str, fx, fy, px, py, couple=0.0
-) -> None:
+def _carry(where: _Where, carried: dict, link: str, fx, fy, px, py, couple=0.0) -> None:
     """Add the force ``(fx, fy)`` at ``(px, py)`` (and a couple) on a known link to ``carried``."""
-    if link == m.ground:
+    if link == where.ground:
         return
-    n = motion.inputs.shape[0]
-    ox, oy = _position(motion, m.ground, link, _ORIGIN)
+    n = where.motion.inputs.shape[0]
+    ox, oy = where.position(link, _ORIGIN)
     value = np.empty((n, 3))
     value[:, 0] = fx
     value[:, 1] = fy
@@ -465,7 +492,7 @@ def _carry(
 
 def _closed_dyad(
     step: GroupStep,
-    motion: Motion,
+    where: _Where,
     applied: Mapping[str, np.ndarray],
     carried: dict[str, np.ndarray],
     m: Mechanism,
@@ -483,11 +510,11 @@ def _closed_dyad(
     inner = [eq for eq in step.equations if eq.a in links and eq.b in links]
     if len(inner) != 1 or inner[0].kind != "HINGE":
         return None
-    n = motion.inputs.shape[0]
+    n = where.motion.inputs.shape[0]
     zero3 = np.zeros((n, 3))
     total = {x: applied.get(x, zero3) + carried.get(x, zero3) for x in links}
     solve = _rrr_forces if step.kind == "RRR" else _rrp_forces
-    forces = solve(step, motion, total, carried, m, inner[0])
+    forces = solve(step, where, total, carried, m, inner[0])
     if forces is None:
         return None
     out = []
@@ -512,18 +539,17 @@ def _outer(step: GroupStep, inner: Equation, link: str, kind: str) -> Equation |
     return found[0] if len(found) == 1 else None
 
 
-def _rrr_forces(step, motion, total, carried, m, inner) -> dict | None:
+def _rrr_forces(step, where, total, carried, m, inner) -> dict | None:
     """RRR: the force on each link at its outer pin from ``u × R_A = a``, ``w × R_A = b``."""
     l1, l2 = step.links
     ea, ec = _outer(step, inner, l1, "HINGE"), _outer(step, inner, l2, "HINGE")
     if ea is None or ec is None or len(step.equations) != 3:
         return None
-    ground = m.ground
-    bx, by = _position(motion, ground, l1, inner.point)
-    ax, ay = _position(motion, ground, l1, ea.point)
-    cx, cy = _position(motion, ground, l2, ec.point)
-    f1x, f1y, m1 = _load_about(motion, ground, l1, total[l1], bx, by)
-    f2x, f2y, m2 = _load_about(motion, ground, l2, total[l2], bx, by)
+    bx, by = where.position(l1, inner.point)
+    ax, ay = where.position(l1, ea.point)
+    cx, cy = where.position(l2, ec.point)
+    f1x, f1y, m1 = _load_about(where, l1, total[l1], bx, by)
+    f2x, f2y, m2 = _load_about(where, l2, total[l2], bx, by)
     ux, uy, wx, wy = ax - bx, ay - by, cx - bx, cy - by
     fx, fy = f1x + f2x, f1y + f2y
     rhs_a = -m1
@@ -539,13 +565,13 @@ def _rrr_forces(step, motion, total, carried, m, inner) -> dict | None:
         (ec, l2, (rcx, rcy), (cx, cy)),
     ):
         other = eq.b if eq.a == link else eq.a
-        _carry(motion, m, carried, other, -gx, -gy, px, py)
+        _carry(where, carried, other, -gx, -gy, px, py)
         out[id(eq)] = (gx, gy, 0.0) if eq.b == link else (-gx, -gy, 0.0)
     out[id(inner)] = (rbx, rby, 0.0) if inner.b == l1 else (-rbx, -rby, 0.0)
     return out
 
 
-def _rrp_forces(step, motion, total, carried, m, inner) -> dict | None:
+def _rrp_forces(step, where, total, carried, m, inner) -> dict | None:
     """RRP: the slide's normal force from the rod's moments about the inner pin, then the rest."""
     rod = next((x for x in step.links if _outer(step, inner, x, "HINGE") is not None), None)
     slider = next((x for x in step.links if _outer(step, inner, x, "SLIDE") is not None), None)
@@ -555,15 +581,14 @@ def _rrp_forces(step, motion, total, carried, m, inner) -> dict | None:
     angle = next((eq for eq in step.equations if eq.kind == "ANGLE"), None)
     if angle is None or {angle.a, angle.b} != {es.a, es.b}:
         return None
-    ground = m.ground
-    cx, cy = _position(motion, ground, rod, inner.point)
-    bx, by = _position(motion, ground, rod, er.point)
-    sx, sy = _position(motion, ground, es.b, es.point)  # the slide's force acts at p_b
-    cos, sin = _turning(motion, ground, slider)
+    cx, cy = where.position(rod, inner.point)
+    bx, by = where.position(rod, er.point)
+    sx, sy = where.position(es.b, es.point)  # the slide's force acts at p_b
+    cos, sin = where.turning(slider)
     nx = cos * float(es.normal[0]) - sin * float(es.normal[1])
     ny = sin * float(es.normal[0]) + cos * float(es.normal[1])
-    frx, fry, mr = _load_about(motion, ground, rod, total[rod], cx, cy)
-    fsx, fsy, ms = _load_about(motion, ground, slider, total[slider], cx, cy)
+    frx, fry, mr = _load_about(where, rod, total[rod], cx, cy)
+    fsx, fsy, ms = _load_about(where, slider, total[slider], cx, cy)
     ux, uy = bx - cx, by - cy
     fx, fy = frx + fsx, fry + fsy
     normal = (mr - (ux * fy - uy * fx)) / (ux * ny - uy * nx)  # on the slider, along n
@@ -572,9 +597,9 @@ def _rrp_forces(step, motion, total, carried, m, inner) -> dict | None:
     gx, gy = normal * nx, normal * ny
     couple = -ms - ((sx - cx) * gy - (sy - cy) * gx)  # on the slider, besides
     guide = es.a if es.b == slider else es.b
-    _carry(motion, m, carried, guide, -gx, -gy, sx, sy, -couple)
+    _carry(where, carried, guide, -gx, -gy, sx, sy, -couple)
     other = er.b if er.a == rod else er.a
-    _carry(motion, m, carried, other, -rbx, -rby, bx, by)
+    _carry(where, carried, other, -rbx, -rby, bx, by)
     return {
         id(er): (rbx, rby, 0.0) if er.b == rod else (-rbx, -rby, 0.0),
         id(inner): (rcx, rcy, 0.0) if inner.b == rod else (-rcx, -rcy, 0.0),
@@ -584,7 +609,7 @@ def _rrp_forces(step, motion, total, carried, m, inner) -> dict | None:
 
 def _crank_balance(
     plan: SolvePlan,
-    motion: Motion,
+    where: _Where,
     driver: DriverStep,
     load: Load | None,
     applied: Mapping[str, np.ndarray],
@@ -602,10 +627,10 @@ def _crank_balance(
     if len(equations) != 1 or eq.kind != "HINGE" or eq.a != driver.link:
         return None
     m = plan.mechanism
-    n = motion.inputs.shape[0]
+    n = where.motion.inputs.shape[0]
     total = applied.get(driver.link, np.zeros((n, 3))) + carried.get(driver.link, np.zeros((n, 3)))
     px, py = float(eq.point[0]), float(eq.point[1])
-    fx, fy, about_pin = _load_about(motion, m.ground, driver.link, total, px, py)
+    fx, fy, about_pin = _load_about(where, driver.link, total, px, py)
     force = np.empty((n, 2))
     force[:, 0] = fx  # what the crank exerts on the ground
     force[:, 1] = fy

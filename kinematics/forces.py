@@ -478,16 +478,22 @@ def _carry(where: _Where, carried: dict, link: str, fx, fy, px, py, couple=0.0) 
     """Add the force ``(fx, fy)`` at ``(px, py)`` (and a couple) on a known link to ``carried``."""
     if link == where.ground:
         return
-    n = where.motion.inputs.shape[0]
     ox, oy = where.position(link, _ORIGIN)
-    value = np.empty((n, 3))
-    value[:, 0] = fx
-    value[:, 1] = fy
-    value[:, 2] = (px - ox) * fy - (py - oy) * fx + couple
-    if link in carried:
-        carried[link] = carried[link] + value
-    else:
-        carried[link] = value
+    moment = (px - ox) * fy - (py - oy) * fx + couple
+    value = carried.get(link)  # the pass's own arrays: added to in place
+    if value is None:
+        value = carried[link] = np.zeros((where.motion.inputs.shape[0], 3))
+    value[:, 0] += fx
+    value[:, 1] += fy
+    value[:, 2] += moment
+
+
+def _total(applied: np.ndarray | None, carried: np.ndarray | None, n: int) -> np.ndarray:
+    """A link's applied and carried loads together (either may be absent), not to be written."""
+    if applied is None or carried is None:
+        found = applied if carried is None else carried
+        return np.zeros((n, 3)) if found is None else found
+    return applied + carried
 
 
 def _closed_dyad(
@@ -511,8 +517,7 @@ def _closed_dyad(
     if len(inner) != 1 or inner[0].kind != "HINGE":
         return None
     n = where.motion.inputs.shape[0]
-    zero3 = np.zeros((n, 3))
-    total = {x: applied.get(x, zero3) + carried.get(x, zero3) for x in links}
+    total = {x: _total(applied.get(x), carried.get(x), n) for x in links}
     solve = _rrr_forces if step.kind == "RRR" else _rrp_forces
     forces = solve(step, where, total, carried, m, inner[0])
     if forces is None:
@@ -628,7 +633,7 @@ def _crank_balance(
         return None
     m = plan.mechanism
     n = where.motion.inputs.shape[0]
-    total = applied.get(driver.link, np.zeros((n, 3))) + carried.get(driver.link, np.zeros((n, 3)))
+    total = _total(applied.get(driver.link), carried.get(driver.link), n)
     px, py = float(eq.point[0]), float(eq.point[1])
     fx, fy, about_pin = _load_about(where, driver.link, total, px, py)
     force = np.empty((n, 2))

@@ -275,22 +275,13 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
     q, qd, qdd = tables
     n = inputs.shape[0]
     _, jac, known_v, _ = group_system(step.links, step.equations, q, qd, n)
-    ratio, inverse = _conditioning(scaled_jacobian(jac, plan.length))
+    ratio = _conditioning(scaled_jacobian(jac, plan.length))
     if step.group is not None and (ratio <= DEAD_CENTRE).any():
         k = int(np.argmax(ratio <= DEAD_CENTRE))
         raise SingularPoseError.at(
             step.label, inputs[k], f"σ_min/σ_max = {ratio[k]:.2g}", plan.driver_kinds
         )
-    if inverse is not None:  # the conditioning's inverse (of the scaled Jacobian) solves too
-        length = plan.length
-
-        def solve(_, rhs: np.ndarray) -> np.ndarray:
-            out = np.einsum("nij,njk->nik", inverse, rhs)
-            out[:, 2::3] /= length
-            return out
-
-    else:
-        solve = np.linalg.solve if jac.shape[1] == jac.shape[2] else _least_squares
+    solve = np.linalg.solve if jac.shape[1] == jac.shape[2] else _least_squares
     z_dot = solve(jac, -known_v[..., None])[..., 0]
     for i, link in enumerate(step.links):
         qd[link] = z_dot[:, 3 * i : 3 * i + 3]
@@ -301,17 +292,15 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
         qdd[link] = z_ddot[:, 3 * i : 3 * i + 3]
 
 
-def _conditioning(jac: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
-    """σ_min/σ_max of each pose's Jacobian (N, m, k), and its inverse when square and regular.
+def _conditioning(jac: np.ndarray) -> np.ndarray:
+    """σ_min/σ_max of each pose's Jacobian (N, m, k).
 
     For square Jacobians ``1/(‖J‖_F·‖J⁻¹‖_F)`` is a lower bound of it, within a
     factor m: only the poses it flags get a singular value decomposition, which
-    costs several times an inverse. The inverse is returned when no pose is
-    flagged (None otherwise).
+    costs several times an inverse.
     """
     ratio = np.ones(jac.shape[0])
     suspect = np.ones(jac.shape[0], dtype=bool)
-    inv = None
     if jac.shape[1] == jac.shape[2]:
         try:
             inv = np.linalg.inv(jac)
@@ -323,8 +312,7 @@ def _conditioning(jac: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
     if suspect.any():
         s = np.linalg.svd(jac[suspect], compute_uv=False)
         ratio[suspect] = s[:, -1] / s[:, 0]
-        inv = None
-    return ratio, inv
+    return ratio
 
 
 def _least_squares(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:

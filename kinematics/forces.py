@@ -509,6 +509,8 @@ def _closed_dyad(
     the moments about the inner pin of one link and the forces on both give
     the outer reactions by a 2×2 Cramer rule (RRR) or the slide's normal force
     by one division (RRP). The reactions come in the order of the equations.
+    An unloaded dyad is left to the dense solve (whose zeros carry the signs
+    the reports have always printed).
     """
     if step.kind not in ("RRR", "RRP") or len(step.links) != 2:
         return None
@@ -518,6 +520,8 @@ def _closed_dyad(
         return None
     n = where.motion.inputs.shape[0]
     total = {x: _total(applied.get(x), carried.get(x), n) for x in links}
+    if not any(value.any() for value in total.values()):
+        return None  # unloaded: the dense solve's zeros, signs and all, as printed before
     solve = _rrr_forces if step.kind == "RRR" else _rrp_forces
     forces = solve(step, where, total, carried, m, inner[0])
     if forces is None:
@@ -623,7 +627,8 @@ def _crank_balance(
     """A crank pinned to the ground, balanced by its motor: its reaction and moment, closed form.
 
     The pin takes the whole force on the crank, the motor the whole moment
-    about the pin. None for any other driver (a slide, a ``balance`` load).
+    about the pin. None for any other driver (a slide, a ``balance`` load)
+    and for an unloaded crank.
     """
     if driver.kind != "R" or load is not None:
         return None
@@ -634,6 +639,8 @@ def _crank_balance(
     m = plan.mechanism
     n = where.motion.inputs.shape[0]
     total = _total(applied.get(driver.link), carried.get(driver.link), n)
+    if not total.any():
+        return None  # unloaded: the dense solve's zeros, signs and all, as printed before
     px, py = float(eq.point[0]), float(eq.point[1])
     fx, fy, about_pin = _load_about(where, driver.link, total, px, py)
     force = np.empty((n, 2))

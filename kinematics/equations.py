@@ -16,7 +16,9 @@ GEAR    1     (θ_a − θ_c) + k·(θ_b − θ_c) = 0: gears a, b rolling on ea
 
 A GEAR equation involves three links; :func:`group_system` handles it itself
 (:func:`evaluate` covers the two-link pairs). :func:`group_system` stacks the
-equations of a group into its residual, Jacobian and velocity terms.
+equations of a group into its residual, Jacobian and velocity terms;
+:func:`group_residual` gives the residual alone, each link's rotation computed
+once (what a Newton iteration with a kept Jacobian needs).
 
 :func:`evaluate` gives, for many poses at once (arrays with a leading pose
 axis), the residual Φ, the partial derivatives with respect to ``(x, y, θ)``
@@ -47,6 +49,7 @@ __all__ = [
     "Equation",
     "equation_point",
     "evaluate",
+    "group_residual",
     "group_system",
     "rotate",
     "rotate_many",
@@ -195,3 +198,54 @@ def group_system(
                 jac[:, rows, 3 * k : 3 * k + 3] += part
         row += eq.size
     return phi, jac, known, bias
+
+
+def group_residual(
+    equations: tuple[Equation, ...], q: Mapping[str, np.ndarray], n: int
+) -> np.ndarray:
+    """A group's residual Φ (N, rows) alone, the same equations as :func:`group_system`."""
+    turns: dict[str, tuple] = {}
+
+    def turn(link: str) -> tuple:
+        found = turns.get(link)
+        if found is None:
+            pose = q.get(link)
+            if pose is None:  # the ground, at rest
+                found = turns[link] = (None, 1.0, 0.0)
+            else:
+                found = turns[link] = (pose, np.cos(pose[:, 2]), np.sin(pose[:, 2]))
+        return found
+
+    def place(link: str, c: np.ndarray) -> tuple:
+        pose, cos, sin = turn(link)
+        cx, cy = float(c[0]), float(c[1])
+        if pose is None:
+            return cx, cy
+        return pose[:, 0] + (cos * cx - sin * cy), pose[:, 1] + (sin * cx + cos * cy)
+
+    rows = sum(eq.size for eq in equations)
+    phi = np.zeros((n, rows))
+    row = 0
+    for eq in equations:
+        if eq.kind == "GEAR":
+            coefficients = ((eq.a, 1.0), (eq.b, eq.ratio), (eq.carrier, -1.0 - eq.ratio))
+            for link, k in coefficients:
+                if link in q:
+                    phi[:, row] += k * q[link][:, 2]
+        elif eq.kind == "ANGLE":
+            phi[:, row] = q[eq.a][:, 2] if eq.a in q else 0.0
+            if eq.b in q:
+                phi[:, row] -= q[eq.b][:, 2]
+        elif eq.kind == "HINGE":
+            ax, ay = place(eq.a, eq.point)
+            bx, by = place(eq.b, eq.point)
+            phi[:, row] = ax - bx
+            phi[:, row + 1] = ay - by
+        else:  # SLIDE: (R(θa)·n)·(p_b − p_a)
+            _, cos, sin = turn(eq.a)
+            nx, ny = float(eq.normal[0]), float(eq.normal[1])
+            ax, ay = place(eq.a, eq.point)
+            bx, by = place(eq.b, eq.point)
+            phi[:, row] = (cos * nx - sin * ny) * (bx - ax) + (sin * nx + cos * ny) * (by - ay)
+        row += eq.size
+    return phi

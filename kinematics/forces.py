@@ -139,45 +139,61 @@ class ForceSweep:
     friction_loss: np.ndarray | None = None
 
 
-def _applied(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
+def _applied(plan: SolvePlan, where: _Where) -> dict[str, np.ndarray]:
     """Generalized applied and inertia loads (Fx, Fy, moment about the frame origin), (N, 3)."""
     m = plan.mechanism
+    motion = where.motion
     n = motion.inputs.shape[0]
     out: dict[str, np.ndarray] = {}
     gravity = np.zeros(2)
     for load in m.loads:
         if load.kind == "gravity":
             gravity = np.array(load.values)
-
-    def lever(link: str, point: str | None) -> np.ndarray:
-        if point is None or m.coordinates(point) is None:
-            raise MechanismError(f"point {point} of a load on link {link} needs coordinates")
-        c = np.array(m.coordinates(point), dtype=float)
-        return rotate_many(motion.q[link][:, 2], c)
-
-    def add(link: str, fx: np.ndarray, fy: np.ndarray, moment: np.ndarray) -> None:
-        value = np.column_stack([np.broadcast_to(fx, n), np.broadcast_to(fy, n), moment])
-        out[link] = out.get(link, np.zeros((n, 3))) + value
-
     for load in m.loads:
+        if load.kind not in ("force", "moment", "mass"):
+            continue
+        link = load.link
+        if link not in out:
+            out[link] = np.zeros((n, 3))
+        total = out[link]
+        if load.kind == "moment":
+            total[:, 2] += load.values[0]
+            continue
+        c = _load_point(m, load)
+        ox, oy = where.position(link, _ORIGIN)
         if load.kind == "force":
-            r = lever(load.link, load.point)
-            fx, fy = load.values
-            add(load.link, fx, fy, r[:, 0] * fy - r[:, 1] * fx)
-        elif load.kind == "moment":
-            add(load.link, 0.0, 0.0, np.full(n, load.values[0]))
-        elif load.kind == "mass":
-            mass, inertia = load.values
-            link = load.link
-            r = lever(link, load.point)
-            v, a = motion.qd[link], motion.qdd[link]
-            w, e = v[:, 2:3], a[:, 2:3]
-            jr = perpendicular(r)
-            a_s = a[:, :2] + e * jr - w**2 * r
-            f = mass * (gravity - a_s)
-            moment = cross(r, f) - inertia * e[:, 0]
-            add(link, f[:, 0], f[:, 1], moment)
+            sx, sy = where.position(link, c)
+            fx, fy = float(load.values[0]), float(load.values[1])
+            total[:, 0] += fx
+            total[:, 1] += fy
+            total[:, 2] += (sx - ox) * fy - (sy - oy) * fx
+            continue
+        mass, inertia = load.values
+        sx, sy, ax, ay, epsilon = _point_acceleration(motion, m.ground, link, c)
+        fx = mass * (gravity[0] - ax)
+        fy = mass * (gravity[1] - ay)
+        total[:, 0] += fx
+        total[:, 1] += fy
+        total[:, 2] += (sx - ox) * fy - (sy - oy) * fx - inertia * epsilon
     return out
+
+
+def _load_point(m: Mechanism, load: Load) -> np.ndarray:
+    """The sketch coordinates of a load's point."""
+    if load.point is None or m.coordinates(load.point) is None:
+        raise MechanismError(f"point {load.point} of a load on link {load.link} needs coordinates")
+    return np.array(m.coordinates(load.point), dtype=float)
+
+
+def _point_acceleration(motion: Motion, ground: str, link: str, c: np.ndarray) -> tuple:
+    """``(x, y, ax, ay, ε)`` of sketch point ``c`` on ``link`` and the link's ε."""
+    frame = motion.frames.get(link)
+    if frame is not None:
+        found = motion.pins.get((link, float(c[0]), float(c[1])))
+        x, y, _, _, ax, ay = found if found is not None else frame.point(c)
+        return x, y, ax, ay, frame.epsilon
+    x, _, a = motion.point(link, c)
+    return x[:, 0], x[:, 1], a[:, 0], a[:, 1], motion.qdd[link][:, 2]
 
 
 def _parts(eq: Equation, motion: Motion) -> tuple[np.ndarray, np.ndarray]:
@@ -315,14 +331,15 @@ def _forces_once(
         )
     m = plan.mechanism
     n = motion.inputs.shape[0]
-    applied = _applied(plan, motion)
+    where = _Where.of(motion, m.ground)
+    applied = _applied(plan, where)
     for link, value in extra.items():
         applied[link] = applied.get(link, np.zeros((n, 3))) + value
     carried: dict[str, np.ndarray] = {}
     reactions: list = []
     order: list[str] = []
     for step in reversed(plan.steps):
-        reactions.extend(_group_reactions(step, motion, applied, carried, m))
+        reactions.extend(_group_reactions(step, where, applied, carried, m))
         order.append(step.label)
     moments: dict[str, np.ndarray] = {}
     balancing_force = None
@@ -330,6 +347,14 @@ def _forces_once(
     power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
     for d in plan.drivers:
         load = balance.get(d.link)
+        crank = _crank_balance(plan, where, d, load, applied, carried)
+        if crank is not None:
+            reaction, moment = crank
+            reactions.append(reaction)
+            moments[d.link] = moment
+            power.append(moment * motion.qd[d.link][:, 2])
+            order.append(f"I({d.link})")
+            continue
         parts, lam, drive = _driver_balance(plan, motion, d, load, applied, carried)
         reactions.extend(_reactions(parts, lam[:, :-1], m))
         if load is not None:
@@ -346,7 +371,7 @@ def _forces_once(
 
 def _group_reactions(
     step: GroupStep,
-    motion: Motion,
+    where: _Where,
     applied: Mapping[str, np.ndarray],
     carried: dict[str, np.ndarray],
     m: Mechanism,
@@ -357,6 +382,10 @@ def _group_reactions(
     (farther from the drivers) pass on; the group's reactions on its known
     links are added to ``carried`` for the groups solved after it.
     """
+    closed = _closed_dyad(step, where, applied, carried, m)
+    if closed is not None:
+        return closed
+    motion = where.motion
     n = motion.inputs.shape[0]
     zero3 = np.zeros((n, 3))
     links = step.links
@@ -384,6 +413,241 @@ def _group_reactions(
             if link not in index:
                 carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
     return _reactions(parts, lam, m)
+
+
+@dataclass(frozen=True)
+class _Where:
+    """Where the links' points are over a solved motion, each point found once per pass.
+
+    ``found`` maps ``(link, x, y)`` (sketch) to world ``(x, y)``; it starts
+    from the pins the solve found (:attr:`Motion.pins`).
+    """
+
+    motion: Motion
+    ground: str
+    found: dict = field(default_factory=dict)
+
+    @classmethod
+    def of(cls, motion: Motion, ground: str) -> _Where:
+        return cls(motion, ground, {k: v[:2] for k, v in motion.pins.items()})
+
+    def position(self, link: str, c: np.ndarray) -> tuple:
+        """World ``(x, y)`` of sketch point ``c`` on ``link`` (arrays (N,) or floats)."""
+        cx, cy = float(c[0]), float(c[1])
+        if link == self.ground:
+            return cx, cy
+        key = (link, cx, cy)
+        value = self.found.get(key)
+        if value is None:
+            value = self.found[key] = self._solved(link, c)
+        return value
+
+    def _solved(self, link: str, c: np.ndarray) -> tuple:
+        frame = self.motion.frames.get(link)
+        if frame is not None:
+            if float(frame.ref[0]) == float(c[0]) and float(frame.ref[1]) == float(c[1]):
+                return frame.x, frame.y
+            return frame.position(c)
+        q = self.motion.q[link]
+        cos, sin = np.cos(q[:, 2]), np.sin(q[:, 2])
+        cx, cy = float(c[0]), float(c[1])
+        return q[:, 0] + cos * cx - sin * cy, q[:, 1] + sin * cx + cos * cy
+
+    def turning(self, link: str) -> tuple:
+        """The cosine and sine of ``link``'s rotation from the sketch."""
+        if link == self.ground:
+            return 1.0, 0.0
+        frame = self.motion.frames.get(link)
+        if frame is not None:
+            return frame.cos, frame.sin
+        theta = self.motion.q[link][:, 2]
+        return np.cos(theta), np.sin(theta)
+
+
+_ORIGIN = np.zeros(2)
+
+
+def _load_about(where: _Where, link: str, total: np.ndarray, px, py) -> tuple:
+    """A link's generalized load (about its frame origin) as ``(Fx, Fy, M about (px, py))``."""
+    ox, oy = where.position(link, _ORIGIN)
+    fx, fy = total[:, 0], total[:, 1]
+    return fx, fy, total[:, 2] + (ox - px) * fy - (oy - py) * fx
+
+
+def _carry(where: _Where, carried: dict, link: str, fx, fy, px, py, couple=0.0) -> None:
+    """Add the force ``(fx, fy)`` at ``(px, py)`` (and a couple) on a known link to ``carried``."""
+    if link == where.ground:
+        return
+    ox, oy = where.position(link, _ORIGIN)
+    moment = (px - ox) * fy - (py - oy) * fx + couple
+    value = carried.get(link)  # the pass's own arrays: added to in place
+    if value is None:
+        value = carried[link] = np.zeros((where.motion.inputs.shape[0], 3))
+    value[:, 0] += fx
+    value[:, 1] += fy
+    value[:, 2] += moment
+
+
+def _total(applied: np.ndarray | None, carried: np.ndarray | None, n: int) -> np.ndarray:
+    """A link's applied and carried loads together (either may be absent), not to be written."""
+    if applied is None or carried is None:
+        found = applied if carried is None else carried
+        return np.zeros((n, 3)) if found is None else found
+    return applied + carried
+
+
+def _closed_dyad(
+    step: GroupStep,
+    where: _Where,
+    applied: Mapping[str, np.ndarray],
+    carried: dict[str, np.ndarray],
+    m: Mechanism,
+) -> list | None:
+    """An RRR or RRP dyad's reactions in closed form, vectorised; None for any other group.
+
+    The same equilibrium as the dense solve, ``Jᵀ·λ = −Q``, worked out by hand:
+    the moments about the inner pin of one link and the forces on both give
+    the outer reactions by a 2×2 Cramer rule (RRR) or the slide's normal force
+    by one division (RRP). The reactions come in the order of the equations.
+    An unloaded dyad is left to the dense solve (whose zeros carry the signs
+    the reports have always printed).
+    """
+    if step.kind not in ("RRR", "RRP") or len(step.links) != 2:
+        return None
+    links = step.links
+    inner = [eq for eq in step.equations if eq.a in links and eq.b in links]
+    if len(inner) != 1 or inner[0].kind != "HINGE":
+        return None
+    n = where.motion.inputs.shape[0]
+    total = {x: _total(applied.get(x), carried.get(x), n) for x in links}
+    if not any(value.any() for value in total.values()):
+        return None  # unloaded: the dense solve's zeros, signs and all, as printed before
+    solve = _rrr_forces if step.kind == "RRR" else _rrp_forces
+    forces = solve(step, where, total, carried, m, inner[0])
+    if forces is None:
+        return None
+    out = []
+    for eq in step.equations:
+        if eq.kind == "ANGLE":
+            continue
+        fx, fy, couple = forces[id(eq)]
+        value = np.empty((n, 2))
+        value[:, 0] = fx
+        value[:, 1] = fy
+        kind = "R" if eq.kind == "HINGE" else "P"
+        out.append((equation_point(m, eq), (eq.a, eq.b), kind, value, np.broadcast_to(
+            np.asarray(couple, dtype=float), (n,)).copy()))
+    return out
+
+
+def _outer(step: GroupStep, inner: Equation, link: str, kind: str) -> Equation | None:
+    """The equation of ``link``'s outer pair of ``kind`` (HINGE or SLIDE), if it has one."""
+    found = [
+        eq for eq in step.equations if eq is not inner and link in (eq.a, eq.b) and eq.kind == kind
+    ]
+    return found[0] if len(found) == 1 else None
+
+
+def _rrr_forces(step, where, total, carried, m, inner) -> dict | None:
+    """RRR: the force on each link at its outer pin from ``u × R_A = a``, ``w × R_A = b``."""
+    l1, l2 = step.links
+    ea, ec = _outer(step, inner, l1, "HINGE"), _outer(step, inner, l2, "HINGE")
+    if ea is None or ec is None or len(step.equations) != 3:
+        return None
+    bx, by = where.position(l1, inner.point)
+    ax, ay = where.position(l1, ea.point)
+    cx, cy = where.position(l2, ec.point)
+    f1x, f1y, m1 = _load_about(where, l1, total[l1], bx, by)
+    f2x, f2y, m2 = _load_about(where, l2, total[l2], bx, by)
+    ux, uy, wx, wy = ax - bx, ay - by, cx - bx, cy - by
+    fx, fy = f1x + f2x, f1y + f2y
+    rhs_a = -m1
+    rhs_b = m2 - (wx * fy - wy * fx)
+    det = ux * wy - uy * wx
+    rax = (rhs_a * wx - ux * rhs_b) / det  # on l1 from its known link, at A
+    ray = (wy * rhs_a - uy * rhs_b) / det
+    rcx, rcy = -fx - rax, -fy - ray  # on l2 from its known link, at C
+    rbx, rby = -f1x - rax, -f1y - ray  # on l1 from l2, at B
+    out = {}
+    for eq, link, (gx, gy), (px, py) in (
+        (ea, l1, (rax, ray), (ax, ay)),
+        (ec, l2, (rcx, rcy), (cx, cy)),
+    ):
+        other = eq.b if eq.a == link else eq.a
+        _carry(where, carried, other, -gx, -gy, px, py)
+        out[id(eq)] = (gx, gy, 0.0) if eq.b == link else (-gx, -gy, 0.0)
+    out[id(inner)] = (rbx, rby, 0.0) if inner.b == l1 else (-rbx, -rby, 0.0)
+    return out
+
+
+def _rrp_forces(step, where, total, carried, m, inner) -> dict | None:
+    """RRP: the slide's normal force from the rod's moments about the inner pin, then the rest."""
+    rod = next((x for x in step.links if _outer(step, inner, x, "HINGE") is not None), None)
+    slider = next((x for x in step.links if _outer(step, inner, x, "SLIDE") is not None), None)
+    if rod is None or slider is None or rod == slider or len(step.equations) != 4:
+        return None
+    er, es = _outer(step, inner, rod, "HINGE"), _outer(step, inner, slider, "SLIDE")
+    angle = next((eq for eq in step.equations if eq.kind == "ANGLE"), None)
+    if angle is None or {angle.a, angle.b} != {es.a, es.b}:
+        return None
+    cx, cy = where.position(rod, inner.point)
+    bx, by = where.position(rod, er.point)
+    sx, sy = where.position(es.b, es.point)  # the slide's force acts at p_b
+    cos, sin = where.turning(slider)
+    nx = cos * float(es.normal[0]) - sin * float(es.normal[1])
+    ny = sin * float(es.normal[0]) + cos * float(es.normal[1])
+    frx, fry, mr = _load_about(where, rod, total[rod], cx, cy)
+    fsx, fsy, ms = _load_about(where, slider, total[slider], cx, cy)
+    ux, uy = bx - cx, by - cy
+    fx, fy = frx + fsx, fry + fsy
+    normal = (mr - (ux * fy - uy * fx)) / (ux * ny - uy * nx)  # on the slider, along n
+    rbx, rby = -fx - normal * nx, -fy - normal * ny  # on the rod from its known link, at B
+    rcx, rcy = -frx - rbx, -fry - rby  # on the rod from the slider, at C
+    gx, gy = normal * nx, normal * ny
+    couple = -ms - ((sx - cx) * gy - (sy - cy) * gx)  # on the slider, besides
+    guide = es.a if es.b == slider else es.b
+    _carry(where, carried, guide, -gx, -gy, sx, sy, -couple)
+    other = er.b if er.a == rod else er.a
+    _carry(where, carried, other, -rbx, -rby, bx, by)
+    return {
+        id(er): (rbx, rby, 0.0) if er.b == rod else (-rbx, -rby, 0.0),
+        id(inner): (rcx, rcy, 0.0) if inner.b == rod else (-rcx, -rcy, 0.0),
+        id(es): (gx, gy, couple) if es.b == slider else (-gx, -gy, -couple),
+    }
+
+
+def _crank_balance(
+    plan: SolvePlan,
+    where: _Where,
+    driver: DriverStep,
+    load: Load | None,
+    applied: Mapping[str, np.ndarray],
+    carried: Mapping[str, np.ndarray],
+) -> tuple[tuple, np.ndarray] | None:
+    """A crank pinned to the ground, balanced by its motor: its reaction and moment, closed form.
+
+    The pin takes the whole force on the crank, the motor the whole moment
+    about the pin. None for any other driver (a slide, a ``balance`` load)
+    and for an unloaded crank.
+    """
+    if driver.kind != "R" or load is not None:
+        return None
+    equations = ground_equations(plan, driver.link)
+    eq = equations[0]
+    if len(equations) != 1 or eq.kind != "HINGE" or eq.a != driver.link:
+        return None
+    m = plan.mechanism
+    n = where.motion.inputs.shape[0]
+    total = _total(applied.get(driver.link), carried.get(driver.link), n)
+    if not total.any():
+        return None  # unloaded: the dense solve's zeros, signs and all, as printed before
+    px, py = float(eq.point[0]), float(eq.point[1])
+    fx, fy, about_pin = _load_about(where, driver.link, total, px, py)
+    force = np.empty((n, 2))
+    force[:, 0] = fx  # what the crank exerts on the ground
+    force[:, 1] = fy
+    reaction = (equation_point(m, eq), (eq.a, eq.b), "R", force, np.zeros(n))
+    return reaction, -about_pin
 
 
 def _driver_balance(

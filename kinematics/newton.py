@@ -3,12 +3,12 @@
 A group's pair equations (:func:`~kinematics.equations.group_system`) are
 solved for its links' poses: on one pose by damped Newton steps
 (:func:`newton_pose`), over many poses by :func:`follow`, which starts each
-chunk of poses from a linear extrapolation of the last solutions and runs one
-batched Newton over the chunk. Far-apart inputs are first joined by
-intermediate poses (:func:`densified`, a continuation from the sketch) so that
-Newton keeps the sketch's assembly mode. The Jacobian's θ columns are scaled
-by the sketch's size (:func:`scaled_jacobian`) so that lengths and angles
-weigh alike.
+chunk of poses from a quadratic extrapolation of the last solutions and runs
+one batched Newton over the chunk, its Jacobian inverted once for several
+steps. Far-apart inputs are first joined by intermediate poses
+(:func:`densified`, a continuation from the sketch) so that Newton keeps the
+sketch's assembly mode. The Jacobian's θ columns are scaled by the sketch's
+size (:func:`scaled_jacobian`) so that lengths and angles weigh alike.
 
 >>> from structure import analyze, parse_edgelist
 >>> from kinematics import make_plan
@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from .equations import group_system
+from .equations import group_residual, group_system
 from .errors import AssemblyError
 from .plan import GroupStep, SolvePlan
 
@@ -43,6 +43,7 @@ _MAX_NEWTON = 60
 _CHUNK_SPAN = 0.3  # input span (rad, or fraction of the sketch) of one batched Newton chunk
 _CHUNK_MAX = 1024
 _CHUNK_ITERATIONS = 12
+_KEEP_JACOBIAN = 4  # Newton steps over a chunk that share one inverted Jacobian
 _MODE_JUMP = 0.2  # rad: a chunk whose angles land this far from the prediction changed mode
 #: rad for a turning driver, fraction of the sketch for a sliding one: the largest step
 #: between poses that needs no intermediate poses
@@ -119,31 +120,57 @@ def _chunk_size(plan: SolvePlan, inputs: np.ndarray) -> int:
 def _predicted(
     links: tuple[str, ...], out: dict, inputs: np.ndarray, k: int, idx: np.ndarray
 ) -> dict[str, np.ndarray]:
-    """The poses ``idx`` extrapolated linearly (in the input) from the solutions at k−2, k−1."""
-    last = {link: out[link][k - 1] for link in links}
-    slope = (
-        {link: out[link][k - 1] - out[link][k - 2] for link in links}
-        if k >= 2
-        else {link: np.zeros(3) for link in links}
-    )
-    step_in = np.linalg.norm(inputs[k - 1] - inputs[k - 2]) if k >= 2 else 0.0
-    reach = np.linalg.norm(inputs[idx] - inputs[k - 1], axis=1)
-    ratio = reach / step_in if step_in > 0 else np.zeros(len(idx))
-    return {link: last[link] + ratio[:, None] * slope[link] for link in links}
+    """The poses ``idx`` extrapolated in the input from the solutions before ``k``.
+
+    A quadratic through the last three solutions (k−3, k−2, k−1), by their
+    distances along the inputs; a line through two when only two are solved
+    (or the three are not distinct); the last solution with only one.
+    """
+    if k < 2:
+        return {link: np.broadcast_to(out[link][k - 1], (len(idx), 3)).copy() for link in links}
+    here = inputs[k - 1]
+    back1 = -float(np.linalg.norm(inputs[k - 2] - here))
+    back2 = 0.0
+    if k >= 3:
+        back2 = back1 - float(np.linalg.norm(inputs[k - 3] - inputs[k - 2]))
+    reach = np.linalg.norm(inputs[idx] - here, axis=1)
+    if back1 == 0.0:
+        return {link: np.broadcast_to(out[link][k - 1], (len(idx), 3)).copy() for link in links}
+    if k < 3 or back2 == back1:
+        weights = [(1.0 - reach / back1, k - 1), (reach / back1, k - 2)]
+    else:  # Lagrange weights of the nodes 0, back1, back2 at the distances reach
+        w0 = (reach - back1) * (reach - back2) / (back1 * back2)
+        w1 = reach * (reach - back2) / (back1 * (back1 - back2))
+        w2 = reach * (reach - back1) / (back2 * (back2 - back1))
+        weights = [(w0, k - 1), (w1, k - 2), (w2, k - 3)]
+    return {
+        link: sum(w[:, None] * out[link][j] for w, j in weights)  # type: ignore[misc]
+        for link in links
+    }
 
 
 def _batched_newton(step: GroupStep, plan: SolvePlan, chunk: dict, size: int) -> bool:
-    """Newton over a chunk of poses at once (``chunk`` updated in place); True if it converged."""
+    """Newton over a chunk of poses at once (``chunk`` updated in place); True if it converged.
+
+    The chunk's Jacobian is inverted once and kept for the following steps
+    (which need the residual only), renewed every ``_KEEP_JACOBIAN`` steps.
+    """
     tol = 1e-13 * plan.length
-    for _ in range(_CHUNK_ITERATIONS):
-        phi, jac, _, _ = group_system(step.links, step.equations, chunk, {}, size)
+    inverse = None
+    for iteration in range(_CHUNK_ITERATIONS):
+        if iteration % _KEEP_JACOBIAN == 0:
+            phi, jac, _, _ = group_system(step.links, step.equations, chunk, {}, size)
+        else:
+            phi = group_residual(step.equations, chunk, size)
         worst = float(np.max(np.abs(phi)))
         if worst <= tol:
             return True
-        try:
-            dz = np.linalg.solve(scaled_jacobian(jac, plan.length), -phi[..., None])[..., 0]
-        except np.linalg.LinAlgError:
-            return False
+        if iteration % _KEEP_JACOBIAN == 0:
+            try:
+                inverse = np.linalg.inv(scaled_jacobian(jac, plan.length))
+            except np.linalg.LinAlgError:
+                return False
+        dz = -np.einsum("nij,nj->ni", inverse, phi)
         dz[:, 2::3] /= plan.length
         for i, link in enumerate(step.links):
             chunk[link] = chunk[link] + dz[:, 3 * i : 3 * i + 3]
@@ -154,8 +181,8 @@ def follow(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, start:
     """Solve a Newton group for every pose, following the inputs in order.
 
     The first pose starts from ``start``; then chunks of poses start from a
-    linear extrapolation of the last two solutions and run one batched Newton
-    together. A chunk where any pose fails to converge, or lands farther from
+    quadratic extrapolation of the last three solutions and run one batched
+    Newton together. A chunk where any pose fails to converge, or lands farther from
     its prediction than the step between poses allows (another assembly mode),
     is redone pose by pose from the previous solution. The group's links'
     poses are stored in ``q``.

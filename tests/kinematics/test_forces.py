@@ -12,10 +12,10 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from kinematics.cli.main import main
-from kinematics.forces import IndeterminateError, solve_forces
+from kinematics.forces import IndeterminateError, forces_over, solve_forces
 from kinematics.plan import make_plan
 from kinematics.serialization import forces_to_dict
-from kinematics.solve import SingularPoseError, solve_pose
+from kinematics.solve import SingularPoseError, solve_pose, solve_poses
 from structure.generators import random_mechanism
 from structure.model import Load, PointDef
 from structure.readwrite.edgelist import parse_edgelist, write_edgelist
@@ -269,3 +269,48 @@ force 2 K 30 50
     couple = half * float(u[0] * (n2 - n1)[1] - u[1] * (n2 - n1)[0])
     assert couple == pytest.approx(slot.couple, rel=1e-9, abs=1e-9)
     assert abs(slot.couple) > 0.1
+
+
+def _with_loads(name: str) -> list[str]:
+    """A fixture's lines with a mass and a force at a pin of every moving link, and gravity."""
+    lines = (FIXTURES / name).read_text().splitlines()
+    mechanism = parse_edgelist(lines)
+    extra = ["gravity 0 -9.81"]
+    for k, link in enumerate(sorted(mechanism.moving_links)):
+        point = next(p.point for p in mechanism.pairs_of(link) if p.point)
+        extra.append(f"mass {link} {1.0 + 0.1 * k} {0.01 * (k + 1)} {point}")
+        extra.append(f"force {link} {point} {10.0 * k} {-50.0 - k}")
+    return lines + extra
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "fourbar.edges",
+        "crank_slider.edges",
+        "jansen.edges",
+        "ch2_2_7_slotted_link.edges",  # an RRP dyad whose guide turns
+        "ch3_3_7_sieve.edges",
+        "quick_return_shaper.edges",
+        "watt_sixbar.edges",
+    ],
+)
+def test_closed_form_reactions_agree_with_the_dense_solve(name, monkeypatch):
+    # the dyads' and cranks' closed forms give the dense solve's reactions and balancing
+    plan = make_plan(analyze(parse_edgelist(_with_loads(name))))
+    inputs = np.linspace(-0.2, 0.3, 11)[:, None]
+    motion = solve_poses(plan, inputs)
+    closed = forces_over(plan, motion)
+    assert closed.power_residual.max() < 1e-9
+    monkeypatch.setattr("kinematics.forces._closed_dyad", lambda *args: None)
+    monkeypatch.setattr("kinematics.forces._crank_balance", lambda *args: None)
+    dense = forces_over(plan, motion)
+    assert closed.order == dense.order
+    for ours, theirs in zip(closed.reactions, dense.reactions, strict=True):
+        assert ours[:3] == theirs[:3]
+        scale = 1.0 + float(np.max(np.abs(theirs[3])))
+        np.testing.assert_allclose(ours[3], theirs[3], rtol=0, atol=1e-12 * scale)
+        np.testing.assert_allclose(ours[4], theirs[4], rtol=0, atol=1e-12 * scale)
+    for link, moment in dense.balancing_moment.items():
+        scale = 1.0 + float(np.max(np.abs(moment)))
+        np.testing.assert_allclose(closed.balancing_moment[link], moment, atol=1e-12 * scale)

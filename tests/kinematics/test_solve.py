@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from kinematics.equations import group_residual, group_system
 from kinematics.plan import make_plan
 from kinematics.solve import AssemblyError, SingularPoseError, solve_pose, solve_poses
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
@@ -343,3 +344,27 @@ def test_stephenson_triad_retraces_the_same_chain_driven_as_two_dyads():
         np.testing.assert_allclose(
             by_triad.qd[link][:, 2], by_dyads.qd[link][:, 2] / w1, rtol=1e-8, atol=1e-9
         )
+
+
+@pytest.mark.parametrize("name", ["eightbar_triad.edges", "crank_slider.edges", "jansen.edges"])
+def test_group_residual_is_group_systems_residual(name):
+    plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
+    rng = np.random.default_rng(7)
+    for step in plan.steps:
+        links = {x for eq in step.equations for x in (eq.a, eq.b)} - {plan.mechanism.ground}
+        q = {link: rng.normal(size=(4, 3)) for link in links}
+        phi = group_system(step.links, step.equations, q, {}, 4)[0]
+        np.testing.assert_array_equal(group_residual(step.equations, q, 4), phi)
+
+
+def test_a_newton_triad_over_a_fine_turn_agrees_with_single_poses():
+    # the batched Newton (quadratic predictor, kept Jacobian) lands where Newton on each pose does
+    plan = make_plan(analyze(read_edgelist(FIXTURES / "eightbar_triad.edges")))
+    phi = np.linspace(0.0, 2 * math.pi, 2001)
+    motion = solve_poses(plan, phi[:, None])
+    for k in (1, 137, 1000, 1999):
+        one = solve_pose(plan, (float(phi[k]),), guess={x: motion.q[x][k] for x in motion.q})
+        for link, state in one.links.items():
+            np.testing.assert_allclose(state.q, motion.q[link][k], atol=1e-10)
+            np.testing.assert_allclose(state.qd, motion.qd[link][k], atol=1e-8)
+            np.testing.assert_allclose(state.qdd, motion.qdd[link][k], atol=1e-6)

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 from networkx.utils import UnionFind
 
-from .errors import EdgeListError, EdgeListProblem, StatementError
+from .errors import EdgeListError, EdgeListProblem, NumberError, StatementError
 from .kinds import LoadKind, PairKind
 
 if TYPE_CHECKING:  # the model builds on these checks: only its types are needed here
@@ -39,10 +39,12 @@ if TYPE_CHECKING:  # the model builds on these checks: only its types are needed
 __all__ = [
     "DRIVER_KEYS",
     "LOAD_KINDS",
+    "MAX_MAGNITUDE",
     "PAIR_OPTIONS",
     "check_driver",
     "check_driver_option",
     "check_load",
+    "check_magnitude",
     "check_pair",
     "check_pair_links",
     "check_pair_option",
@@ -80,6 +82,29 @@ _PAIR_MEASURES = {
     "friction": "the Coulomb friction coefficient of the slide, >= 0",
     "circle": "the friction-circle radius of the pin (metres), >= 0",
 }
+
+
+#: the largest magnitude of a number in a description (coordinates, loads, speeds, options):
+#: far inside the float range (about 1.8e308), so that the squares and products the solvers
+#: form stay finite; a value beyond it is refused at the reader with :func:`check_magnitude`
+MAX_MAGNITUDE = 1e150
+
+
+def check_magnitude(*values: float) -> None:
+    """Each finite value is within ±:data:`MAX_MAGNITUDE`; raise NumberError if not.
+
+    >>> check_magnitude(1.0, -1e150)
+    >>> check_magnitude(1e308)
+    Traceback (most recent call last):
+    ...
+    structure.errors.NumberError: 1e+308 is beyond ±1e+150, the largest magnitude as...
+    """
+    for value in values:
+        if abs(value) > MAX_MAGNITUDE:
+            raise NumberError(
+                f"{value:.6g} is beyond ±{MAX_MAGNITUDE:g}, the largest magnitude assur takes "
+                "(so that squares and products of the values stay finite)"
+            )
 
 
 def _is_finite(value: Any) -> bool:
@@ -167,12 +192,15 @@ def _check_pair_numbers(options: Mapping[str, Any]) -> None:
     for key in ("angle", "normal"):
         if key in options and not _is_finite(options[key]):
             raise StatementError("angle and normal must be finite numbers of degrees")
+        if key in options:
+            check_magnitude(options[key])
     for key, meaning in _PAIR_MEASURES.items():
         if key not in options:
             continue
         value = options[key]
         if not _is_finite(value) or value < 0 or (key == "span" and value == 0):
             raise StatementError(f"{key}= is {meaning}")
+        check_magnitude(value)
 
 
 def _check_centers(centers: Any) -> None:
@@ -209,6 +237,8 @@ def _check_gear(a: str, b: str, options: Mapping[str, Any], gear: bool) -> None:
         raise StatementError(f"internal={internal} is not one of the pair's links {a}, {b}")
     if "module" in options and not (_is_finite(options["module"]) and options["module"] > 0):
         raise StatementError("module= is the gear module in metres")
+    if "module" in options:
+        check_magnitude(options["module"])
 
 
 # ------------------------------------------------------------------ points, loads, drivers
@@ -219,6 +249,7 @@ def check_point(name: str, x: Any, y: Any) -> None:
             "point coordinates must be finite numbers (metres) or exact expressions "
             "such as 0.2*sqrt(3)"
         )
+    check_magnitude(x, y)
 
 
 def load_kind(kind: LoadKind | str) -> LoadKind:
@@ -254,6 +285,7 @@ def check_load(
         raise StatementError(
             f"{usage}: numbers must be finite (or exact expressions like 500*sqrt(2))"
         )
+    check_magnitude(*values)
     if kind is LoadKind.MASS and min(values) < 0:
         raise StatementError("mass and moment of inertia cannot be negative")
     return kind
@@ -271,6 +303,7 @@ def check_driver(link: str, motion: Iterable[tuple[str, Any]]) -> None:
         check_driver_option(key)
         if not _is_finite(value):
             raise StatementError(f"driver option {key} needs a finite number, not {value!r}")
+        check_magnitude(value)
 
 
 # ----------------------------------------------------------------------------- topology

@@ -21,7 +21,7 @@ from ..gears.trains import (
     train_forces,
     train_losses,
 )
-from .output import EXIT_OK, failed, print_json, write_lines
+from .output import EXIT_OK, EXIT_USAGE, check_finite, fail, failed, print_json, write_lines
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.model import Mechanism
@@ -46,8 +46,11 @@ class _TrainAnswer:
 
 def run_gears(args: argparse.Namespace) -> int:
     """Analyse the gear train in ``args.file``; returns the exit code."""
+    if args.efficiency is not None and not 0 < args.efficiency <= 1:
+        return fail("--efficiency is the efficiency of each mesh, a number in (0, 1]", EXIT_USAGE)
     try:
         answer = _solve_train(read_edgelist(args.file), args.efficiency)
+        check_finite(_train_dict(answer))
     except MechanismError as exc:
         return failed(exc, args.json)
     if args.json:

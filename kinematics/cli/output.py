@@ -1,21 +1,33 @@
 """What every command prints: JSON, the title lines, vectors, the error line and its exit code.
 
 Exit codes: :data:`EXIT_OK` (0), :data:`EXIT_MECHANISM` (1, a bad file or an impossible
-mechanism), :data:`EXIT_USAGE` (2, a usage error).
+mechanism), :data:`EXIT_USAGE` (2, a usage error), :data:`EXIT_BUG` (3, a bug in assur).
+No NaN or infinity is ever printed: :func:`check_finite` refuses a result that holds one,
+and JSON is written with ``allow_nan=False`` (it parses with a strict parser).
+
+>>> check_finite({"reactions": [{"force": [1.0, float("nan")]}]})
+Traceback (most recent call last):
+...
+structure.errors.NotFiniteError: reactions[0].force[1] is not finite: the result ov...
 """
 
 from __future__ import annotations
 
 import json
+import math
 import sys
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 
-from structure.errors import MechanismError
+import numpy as np
+
+from structure.errors import MechanismError, NotFiniteError, clipped
 
 __all__ = [
+    "EXIT_BUG",
     "EXIT_MECHANISM",
     "EXIT_OK",
     "EXIT_USAGE",
+    "check_finite",
     "fail",
     "failed",
     "print_json",
@@ -30,11 +42,59 @@ EXIT_OK = 0
 EXIT_MECHANISM = 1
 #: a usage error: bad options or option values
 EXIT_USAGE = 2
+#: a bug in assur (an exception that is no :class:`MechanismError`): please report it
+EXIT_BUG = 3
+
+#: the longest line of an error message written (a message may quote what the user wrote)
+_MESSAGE_WIDTH = 1000
+
+
+def _non_finite(data: object, path: str = "") -> str | None:
+    """The path (``reactions[0].force[1]``) of the first NaN or infinity in ``data``, or None."""
+    if isinstance(data, float):
+        return None if math.isfinite(data) else path or "the result"
+    if isinstance(data, np.ndarray):
+        if data.dtype.kind not in "fc" or np.isfinite(data).all():
+            return None
+        return path or "the result"
+    if isinstance(data, Mapping):
+        items: Iterable[tuple[str, object]] = (
+            (f"{path}.{key}" if path else str(key), value) for key, value in data.items()
+        )
+    elif isinstance(data, (list, tuple)):
+        items = ((f"{path}[{k}]", value) for k, value in enumerate(data))
+    else:
+        return None
+    for where, value in items:
+        found = _non_finite(value, where)
+        if found is not None:
+            return found
+    return None
+
+
+def check_finite(data: object) -> None:
+    """Raise :class:`NotFiniteError` naming the first NaN or infinity in ``data``.
+
+    ``data`` is a result as plain data: dicts, lists, floats and numpy arrays.
+    """
+    where = _non_finite(data)
+    if where is not None:
+        raise NotFiniteError(
+            f"{clipped(where)} is not finite: the result overflowed "
+            "(the values of the file are too large)"
+        )
 
 
 def print_json(data: object) -> None:
-    """Print ``data`` as one indented JSON object (UTF-8 kept as is)."""
-    print(json.dumps(data, indent=2, ensure_ascii=False))
+    """Print ``data`` as one indented JSON object (UTF-8 kept as is), never NaN or infinity.
+
+    Raises
+    ------
+    NotFiniteError
+        When ``data`` holds a NaN or an infinity.
+    """
+    check_finite(data)
+    print(json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False))
 
 
 def title_lines(mechanism, suffix: str = "") -> list[str]:
@@ -48,7 +108,12 @@ def write_lines(lines: Iterable[str]) -> None:
 
 
 def fail(message: str, code: int = EXIT_MECHANISM) -> int:
-    """Write ``error: message`` to stderr and give back the exit ``code``."""
+    """Write ``error: message`` to stderr and give back the exit ``code``.
+
+    Each line of the message is cut at 1000 characters.
+    """
+    if len(message) > _MESSAGE_WIDTH:
+        message = "\n".join(clipped(line, _MESSAGE_WIDTH) for line in message.split("\n"))
     sys.stderr.write(f"error: {message}\n")
     return code
 

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy
 
-from structure.errors import MechanismError, MobilityError
+from structure.errors import MechanismError, MobilityError, NumberError
 from structure.meshes import Mesh, is_planet, meshes
 from structure.model import Mechanism
 
@@ -452,7 +452,7 @@ def train_losses(mechanism: Mechanism, ratios: TrainRatios, mesh_efficiency: flo
     (2.4, -77.6, 0.97)
     """
     if not 0 < mesh_efficiency <= 1:
-        raise ValueError("the mesh efficiency is a number in (0, 1]")
+        raise NumberError("the mesh efficiency is a number in (0, 1]")
     forces = train_forces(mechanism, ratios)
     omega = {**{k: float(v) for k, v in ratios.ratios.items()}, mechanism.ground: 0.0}
     omega[ratios.inputs[0]] = 1.0

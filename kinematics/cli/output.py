@@ -14,13 +14,12 @@ structure.errors.NotFiniteError: reactions[0].force[1] is not finite: the result
 from __future__ import annotations
 
 import json
-import math
 import sys
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable
 
-import numpy as np
+from structure.errors import MechanismError, clipped
 
-from structure.errors import MechanismError, NotFiniteError, clipped
+from ..serialization import check_finite
 
 __all__ = [
     "EXIT_BUG",
@@ -47,42 +46,6 @@ EXIT_BUG = 3
 
 #: the longest line of an error message written (a message may quote what the user wrote)
 _MESSAGE_WIDTH = 1000
-
-
-def _non_finite(data: object, path: str = "") -> str | None:
-    """The path (``reactions[0].force[1]``) of the first NaN or infinity in ``data``, or None."""
-    if isinstance(data, float):
-        return None if math.isfinite(data) else path or "the result"
-    if isinstance(data, np.ndarray):
-        if data.dtype.kind not in "fc" or np.isfinite(data).all():
-            return None
-        return path or "the result"
-    if isinstance(data, Mapping):
-        items: Iterable[tuple[str, object]] = (
-            (f"{path}.{key}" if path else str(key), value) for key, value in data.items()
-        )
-    elif isinstance(data, (list, tuple)):
-        items = ((f"{path}[{k}]", value) for k, value in enumerate(data))
-    else:
-        return None
-    for where, value in items:
-        found = _non_finite(value, where)
-        if found is not None:
-            return found
-    return None
-
-
-def check_finite(data: object) -> None:
-    """Raise :class:`NotFiniteError` naming the first NaN or infinity in ``data``.
-
-    ``data`` is a result as plain data: dicts, lists, floats and numpy arrays.
-    """
-    where = _non_finite(data)
-    if where is not None:
-        raise NotFiniteError(
-            f"{clipped(where)} is not finite: the result overflowed "
-            "(the values of the file are too large)"
-        )
 
 
 def print_json(data: object) -> None:

@@ -421,3 +421,12 @@ def test_import_structure_does_not_import_sympy():
         cwd=Path(__file__).resolve().parent.parent,
     )
     assert result.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize(
+    "line",
+    ["0 1 R A " + "x" * 20_000_000, "x" * 20_000_000 + " 5 R Q", "driver " + "x" * 20_000_000],
+)
+def test_the_cli_quotes_a_20_mb_line_cut(line):
+    code, out, err = _run_file([*_edges(), line], "classify")
+    assert code == 1 and out == "" and len(err) < 2000 and "…" in err

@@ -480,5 +480,7 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
 
 
 def mechanism_to_json(mechanism: Mechanism, indent: int | None = 2) -> str:
-    """The JSON text of ``mechanism``."""
-    return json.dumps(mechanism_to_dict(mechanism), indent=indent, ensure_ascii=False)
+    """The JSON text of ``mechanism`` (strict JSON: its numbers are finite, as read)."""
+    return json.dumps(
+        mechanism_to_dict(mechanism), indent=indent, ensure_ascii=False, allow_nan=False
+    )

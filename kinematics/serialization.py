@@ -1,6 +1,6 @@
 """Kinematic results as plain data (JSON-ready dicts), SI units and radians, never NaN.
 
-Each ``*_to_dict`` checks its answer with :func:`check_finite`: a value that
+Each ``*_to_dict`` checks its answer with :func:`~structure.validation.check_finite`: a value that
 overflowed is a :class:`~structure.errors.NotFiniteError`, not a NaN in the output.
 
 >>> check_finite({"reactions": [{"force": [1.0, float("nan")]}]})
@@ -17,13 +17,9 @@ structure.errors.NotFiniteError: reactions[0].force[1] is not finite: the result
 
 from __future__ import annotations
 
-import math
-from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
-from structure.errors import NotFiniteError, clipped
+from structure.validation import check_finite
 
 if TYPE_CHECKING:  # annotations only: importing the exact solver would import sympy
     from .exact import ExactForces, ExactState
@@ -37,42 +33,6 @@ __all__ = [
     "forces_to_dict",
     "state_to_dict",
 ]
-
-
-def _non_finite(data: object, path: str = "") -> str | None:
-    """The path (``reactions[0].force[1]``) of the first NaN or infinity in ``data``, or None."""
-    if isinstance(data, float):
-        return None if math.isfinite(data) else path or "the result"
-    if isinstance(data, np.ndarray):
-        if data.dtype.kind not in "fc" or np.isfinite(data).all():
-            return None
-        return path or "the result"
-    if isinstance(data, Mapping):
-        items: Iterable[tuple[str, object]] = (
-            (f"{path}.{key}" if path else str(key), value) for key, value in data.items()
-        )
-    elif isinstance(data, (list, tuple)):
-        items = ((f"{path}[{k}]", value) for k, value in enumerate(data))
-    else:
-        return None
-    for where, value in items:
-        found = _non_finite(value, where)
-        if found is not None:
-            return found
-    return None
-
-
-def check_finite(data: object) -> None:
-    """Raise :class:`NotFiniteError` naming the first NaN or infinity in ``data``.
-
-    ``data`` is a result as plain data: dicts, lists, floats and numpy arrays.
-    """
-    where = _non_finite(data)
-    if where is not None:
-        raise NotFiniteError(
-            f"{clipped(where)} is not finite: the result overflowed "
-            "(the values of the file are too large)"
-        )
 
 
 def _both(x: Any) -> dict[str, Any]:

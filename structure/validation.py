@@ -6,6 +6,8 @@ and build each statement through :func:`~structure.model.make_pair`,
 :func:`~structure.model.make_driver`, which ask the checks below: the two
 readers refuse the same content for the same reason. Each check raises a
 :class:`~structure.errors.StatementError` with the reason, or returns.
+:func:`check_finite` gives the same verdict on a result before it is printed or written:
+no NaN or infinity.
 :func:`validated` then checks a whole mechanism's topology and raises one
 :class:`~structure.errors.EdgeListError` listing every problem.
 
@@ -28,9 +30,17 @@ import numbers
 from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
 from networkx.utils import UnionFind
 
-from .errors import EdgeListError, EdgeListProblem, NumberError, StatementError
+from .errors import (
+    EdgeListError,
+    EdgeListProblem,
+    NotFiniteError,
+    NumberError,
+    StatementError,
+    clipped,
+)
 from .kinds import LoadKind, PairKind
 
 if TYPE_CHECKING:  # the model builds on these checks: only its types are needed here
@@ -43,6 +53,7 @@ __all__ = [
     "PAIR_OPTIONS",
     "check_driver",
     "check_driver_option",
+    "check_finite",
     "check_load",
     "check_magnitude",
     "check_pair",
@@ -442,3 +453,40 @@ def _point_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
         if p.on is not None and not m.has_link(p.on):
             reason = f"point {p.name} is fixed to unknown link {p.on}"
             yield EdgeListProblem(p.line_no, p.statement, reason)
+
+
+# ----------------------------------------------------------------------------- results
+def _non_finite(data: object, path: str = "") -> str | None:
+    """The path (``reactions[0].force[1]``) of the first NaN or infinity in ``data``, or None."""
+    if isinstance(data, float):
+        return None if math.isfinite(data) else path or "the result"
+    if isinstance(data, np.ndarray):
+        if data.dtype.kind not in "fc" or np.isfinite(data).all():
+            return None
+        return path or "the result"
+    if isinstance(data, Mapping):
+        items: Iterable[tuple[str, object]] = (
+            (f"{path}.{key}" if path else str(key), value) for key, value in data.items()
+        )
+    elif isinstance(data, (list, tuple)):
+        items = ((f"{path}[{k}]", value) for k, value in enumerate(data))
+    else:
+        return None
+    for where, value in items:
+        found = _non_finite(value, where)
+        if found is not None:
+            return found
+    return None
+
+
+def check_finite(data: object) -> None:
+    """Raise :class:`NotFiniteError` naming the first NaN or infinity in ``data``.
+
+    ``data`` is a result as plain data: dicts, lists, floats and numpy arrays.
+    """
+    where = _non_finite(data)
+    if where is not None:
+        raise NotFiniteError(
+            f"{clipped(where)} is not finite: the result overflowed "
+            "(the values of the file are too large)"
+        )

@@ -2,8 +2,8 @@
 
 Exit codes: :data:`EXIT_OK` (0), :data:`EXIT_MECHANISM` (1, a bad file or an impossible
 mechanism), :data:`EXIT_USAGE` (2, a usage error), :data:`EXIT_BUG` (3, a bug in assur).
-No NaN or infinity is ever printed: :func:`check_finite` refuses a result that holds one,
-and JSON is written with ``allow_nan=False`` (it parses with a strict parser).
+No NaN or infinity is ever printed: :func:`~structure.validation.check_finite` refuses a
+result that holds one, and JSON is written with ``allow_nan=False`` (a strict parser reads it).
 
 >>> check_finite({"reactions": [{"force": [1.0, float("nan")]}]})
 Traceback (most recent call last):
@@ -18,8 +18,7 @@ import sys
 from collections.abc import Iterable
 
 from structure.errors import MechanismError, clipped
-
-from ..serialization import check_finite
+from structure.validation import check_finite
 
 __all__ = [
     "EXIT_BUG",

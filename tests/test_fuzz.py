@@ -430,3 +430,20 @@ def test_import_structure_does_not_import_sympy():
 def test_the_cli_quotes_a_20_mb_line_cut(line):
     code, out, err = _run_file([*_edges(), line], "classify")
     assert code == 1 and out == "" and len(err) < 2000 and "…" in err
+
+
+def test_fuzz_finding_a_mesh_without_either_tooth_number_is_a_named_error():
+    """Found by the fuzz test (5,000 cases): a TypeError in the coaxiality of the planets."""
+    lines = [
+        "ground 0",
+        "driver C",
+        "0 C R O",
+        "0 1 R O",
+        "C 2 R B",
+        "1 2 H gear module=0.02",
+        "2 0 H gear z=20,60 internal=0 module=0.02",
+        "moment 1 20",
+    ]
+    code, out, err = _run_file(lines, "gears", "--json")
+    assert code == 1 and "neither tooth number" in err
+    assert "neither tooth number" in json.loads(out, parse_constant=_strict)["error"]

@@ -81,6 +81,11 @@ def _coaxial_teeth(mechanism: Mechanism, found: list[Mesh]) -> dict[tuple[int, i
             z_other = mesh.zb if mesh.a == planet else mesh.za
             zp = sympy.Integer(z_planet) if z_planet is not None else None
             zo = sympy.Integer(z_other) if z_other is not None else None
+            if zp is None and zo is None:
+                raise MechanismError(
+                    f"mesh {mesh.pair.label} gives neither tooth number: coaxiality can find "
+                    "one unknown z per planet, not both of a mesh"
+                )
             if zp is None or zo is None:
                 # side 1 is the tooth number of a, side 2 of b
                 missing_a = (zp is None) == (mesh.a == planet)

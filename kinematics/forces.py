@@ -680,6 +680,8 @@ def _driver_balance(
         r0 += eq.size
     if load is not None:
         u = unit_from_degrees(load.values[0])
+        if m.coordinates(load.point) is None:  # type: ignore[arg-type]
+            raise MechanismError(f"point {load.point} of the balance on {link} needs coordinates")
         c = np.array(m.coordinates(load.point), dtype=float)  # type: ignore[arg-type]
         rp = rotate_many(motion.q[link][:, 2], c)
         drive = np.stack([np.full(n, u[0]), np.full(n, u[1]), cross(rp, u)], axis=1)

@@ -1,4 +1,12 @@
-"""Kinematic results as plain data (JSON-ready dicts), SI units and radians.
+"""Kinematic results as plain data (JSON-ready dicts), SI units and radians, never NaN.
+
+Each ``*_to_dict`` checks its answer with :func:`~structure.validation.check_finite`: a value that
+overflowed is a :class:`~structure.errors.NotFiniteError`, not a NaN in the output.
+
+>>> check_finite({"reactions": [{"force": [1.0, float("nan")]}]})
+Traceback (most recent call last):
+...
+structure.errors.NotFiniteError: reactions[0].force[1] is not finite: the result overflowe...
 
 >>> from structure import analyze, parse_edgelist
 >>> from kinematics import make_plan, solve_pose
@@ -11,12 +19,20 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from structure.validation import check_finite
+
 if TYPE_CHECKING:  # annotations only: importing the exact solver would import sympy
     from .exact import ExactForces, ExactState
     from .forces import ForceSolution
     from .state import KinematicState
 
-__all__ = ["exact_forces_to_dict", "exact_to_dict", "forces_to_dict", "state_to_dict"]
+__all__ = [
+    "check_finite",
+    "exact_forces_to_dict",
+    "exact_to_dict",
+    "forces_to_dict",
+    "state_to_dict",
+]
 
 
 def _both(x: Any) -> dict[str, Any]:
@@ -41,6 +57,7 @@ def exact_forces_to_dict(result: ExactForces) -> dict[str, Any]:
     }
     if result.balancing_force is not None:
         out["balancing_force"] = [_both(f) for f in result.balancing_force]
+    check_finite(out)
     return out
 
 
@@ -86,12 +103,13 @@ def forces_to_dict(result: ForceSolution) -> dict[str, Any]:
             point: {link: f.tolist() for link, f in forces.items()}
             for point, forces in result.pin_forces.items()
         }
+    check_finite(out)
     return out
 
 
 def exact_to_dict(state: ExactState) -> dict[str, Any]:
     """Exact values as ``{"value": "50*sqrt(3)", "float": 86.60...}`` pairs."""
-    return {
+    out = {
         "links": {
             name: {"omega": _both(v["omega"]), "epsilon": _both(v["epsilon"])}
             for name, v in state.links.items()
@@ -104,11 +122,19 @@ def exact_to_dict(state: ExactState) -> dict[str, Any]:
             for name, v in state.points.items()
         },
     }
+    check_finite(out)
+    return out
 
 
 def state_to_dict(state: KinematicState) -> dict[str, Any]:
-    """``{"links": {NAME: {"angle", "omega", "epsilon"}}, "points": {NAME: {...}}}``."""
-    return {
+    """``{"links": {NAME: {"angle", "omega", "epsilon"}}, "points": {NAME: {...}}}``.
+
+    Raises
+    ------
+    NotFiniteError
+        When a value overflowed (the values of the file are too large).
+    """
+    out = {
         "inputs": list(state.inputs),
         "links": {
             name: {"angle": link.angle, "omega": link.omega, "epsilon": link.epsilon}
@@ -124,3 +150,5 @@ def state_to_dict(state: KinematicState) -> dict[str, Any]:
             for name, point in state.points.items()
         },
     }
+    check_finite(out)
+    return out

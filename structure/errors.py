@@ -11,13 +11,29 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 __all__ = [
+    "QUOTE_WIDTH",
+    "REASON_WIDTH",
     "DecompositionError",
     "EdgeListError",
     "EdgeListProblem",
     "MechanismError",
     "MobilityError",
+    "NotFiniteError",
+    "NumberError",
     "StatementError",
+    "UsageError",
+    "clipped",
 ]
+
+#: a message quotes at most this many characters of a line or a value the user wrote
+QUOTE_WIDTH = 80
+#: a reason is cut at this many characters (it may quote a token of the line)
+REASON_WIDTH = 400
+
+
+def clipped(text: str, width: int = QUOTE_WIDTH) -> str:
+    """``text`` cut to its first ``width`` characters and ``…`` when longer (for messages)."""
+    return text if len(text) <= width else text[:width] + "…"
 
 
 class MechanismError(Exception):
@@ -37,8 +53,13 @@ class EdgeListProblem:
 
     def __str__(self) -> str:
         if self.line_no:
-            return f"line {self.line_no}: {self.reason}: {self.line.strip()!r}"
-        return self.reason
+            return f"line {self.line_no}: {self.reason_text}: {clipped(self.line.strip())!r}"
+        return self.reason_text
+
+    @property
+    def reason_text(self) -> str:
+        """The reason as printed: cut at :data:`REASON_WIDTH` (it may quote a long token)."""
+        return clipped(self.reason, REASON_WIDTH)
 
 
 class EdgeListError(MechanismError, ValueError):
@@ -80,6 +101,27 @@ class StatementError(MechanismError, ValueError):
     def __init__(self, reason: str):
         self.reason = reason
         super().__init__(reason)
+
+
+class NumberError(StatementError):
+    """A number or exact expression that cannot be read, or is beyond the limits assur takes.
+
+    Raised for bad syntax, nesting deeper than the parser allows, numbers with
+    too many digits or too large an exponent, non-finite values and values
+    beyond the largest magnitude (see :mod:`structure.expressions` and
+    :mod:`structure.validation`). It is a ``ValueError`` too.
+    """
+
+
+class UsageError(MechanismError):
+    """An option value the command line cannot take (exit status 2, not 1)."""
+
+
+class NotFiniteError(MechanismError):
+    """A computed result is not finite: the input values are too large for floating point.
+
+    Raised instead of printing or writing NaN or infinity.
+    """
 
 
 class MobilityError(MechanismError):

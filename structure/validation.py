@@ -6,6 +6,8 @@ and build each statement through :func:`~structure.model.make_pair`,
 :func:`~structure.model.make_driver`, which ask the checks below: the two
 readers refuse the same content for the same reason. Each check raises a
 :class:`~structure.errors.StatementError` with the reason, or returns.
+:func:`check_finite` gives the same verdict on a result before it is printed or written:
+no NaN or infinity.
 :func:`validated` then checks a whole mechanism's topology and raises one
 :class:`~structure.errors.EdgeListError` listing every problem.
 
@@ -28,9 +30,17 @@ import numbers
 from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
 from networkx.utils import UnionFind
 
-from .errors import EdgeListError, EdgeListProblem, StatementError
+from .errors import (
+    EdgeListError,
+    EdgeListProblem,
+    NotFiniteError,
+    NumberError,
+    StatementError,
+    clipped,
+)
 from .kinds import LoadKind, PairKind
 
 if TYPE_CHECKING:  # the model builds on these checks: only its types are needed here
@@ -39,10 +49,13 @@ if TYPE_CHECKING:  # the model builds on these checks: only its types are needed
 __all__ = [
     "DRIVER_KEYS",
     "LOAD_KINDS",
+    "MAX_MAGNITUDE",
     "PAIR_OPTIONS",
     "check_driver",
     "check_driver_option",
+    "check_finite",
     "check_load",
+    "check_magnitude",
     "check_pair",
     "check_pair_links",
     "check_pair_option",
@@ -80,6 +93,29 @@ _PAIR_MEASURES = {
     "friction": "the Coulomb friction coefficient of the slide, >= 0",
     "circle": "the friction-circle radius of the pin (metres), >= 0",
 }
+
+
+#: the largest magnitude of a number in a description (coordinates, loads, speeds, options):
+#: far inside the float range (about 1.8e308), so that the squares and products the solvers
+#: form stay finite; a value beyond it is refused at the reader with :func:`check_magnitude`
+MAX_MAGNITUDE = 1e150
+
+
+def check_magnitude(*values: float) -> None:
+    """Each finite value is within ±:data:`MAX_MAGNITUDE`; raise NumberError if not.
+
+    >>> check_magnitude(1.0, -1e150)
+    >>> check_magnitude(1e308)
+    Traceback (most recent call last):
+    ...
+    structure.errors.NumberError: 1e+308 is beyond ±1e+150, the largest magnitude as...
+    """
+    for value in values:
+        if abs(value) > MAX_MAGNITUDE:
+            raise NumberError(
+                f"{value:.6g} is beyond ±{MAX_MAGNITUDE:g}, the largest magnitude assur takes "
+                "(so that squares and products of the values stay finite)"
+            )
 
 
 def _is_finite(value: Any) -> bool:
@@ -167,12 +203,15 @@ def _check_pair_numbers(options: Mapping[str, Any]) -> None:
     for key in ("angle", "normal"):
         if key in options and not _is_finite(options[key]):
             raise StatementError("angle and normal must be finite numbers of degrees")
+        if key in options:
+            check_magnitude(options[key])
     for key, meaning in _PAIR_MEASURES.items():
         if key not in options:
             continue
         value = options[key]
         if not _is_finite(value) or value < 0 or (key == "span" and value == 0):
             raise StatementError(f"{key}= is {meaning}")
+        check_magnitude(value)
 
 
 def _check_centers(centers: Any) -> None:
@@ -209,6 +248,8 @@ def _check_gear(a: str, b: str, options: Mapping[str, Any], gear: bool) -> None:
         raise StatementError(f"internal={internal} is not one of the pair's links {a}, {b}")
     if "module" in options and not (_is_finite(options["module"]) and options["module"] > 0):
         raise StatementError("module= is the gear module in metres")
+    if "module" in options:
+        check_magnitude(options["module"])
 
 
 # ------------------------------------------------------------------ points, loads, drivers
@@ -219,6 +260,7 @@ def check_point(name: str, x: Any, y: Any) -> None:
             "point coordinates must be finite numbers (metres) or exact expressions "
             "such as 0.2*sqrt(3)"
         )
+    check_magnitude(x, y)
 
 
 def load_kind(kind: LoadKind | str) -> LoadKind:
@@ -254,6 +296,7 @@ def check_load(
         raise StatementError(
             f"{usage}: numbers must be finite (or exact expressions like 500*sqrt(2))"
         )
+    check_magnitude(*values)
     if kind is LoadKind.MASS and min(values) < 0:
         raise StatementError("mass and moment of inertia cannot be negative")
     return kind
@@ -271,6 +314,7 @@ def check_driver(link: str, motion: Iterable[tuple[str, Any]]) -> None:
         check_driver_option(key)
         if not _is_finite(value):
             raise StatementError(f"driver option {key} needs a finite number, not {value!r}")
+        check_magnitude(value)
 
 
 # ----------------------------------------------------------------------------- topology
@@ -409,3 +453,40 @@ def _point_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
         if p.on is not None and not m.has_link(p.on):
             reason = f"point {p.name} is fixed to unknown link {p.on}"
             yield EdgeListProblem(p.line_no, p.statement, reason)
+
+
+# ----------------------------------------------------------------------------- results
+def _non_finite(data: object, path: str = "") -> str | None:
+    """The path (``reactions[0].force[1]``) of the first NaN or infinity in ``data``, or None."""
+    if isinstance(data, float):
+        return None if math.isfinite(data) else path or "the result"
+    if isinstance(data, np.ndarray):
+        if data.dtype.kind not in "fc" or np.isfinite(data).all():
+            return None
+        return path or "the result"
+    if isinstance(data, Mapping):
+        items: Iterable[tuple[str, object]] = (
+            (f"{path}.{key}" if path else str(key), value) for key, value in data.items()
+        )
+    elif isinstance(data, (list, tuple)):
+        items = ((f"{path}[{k}]", value) for k, value in enumerate(data))
+    else:
+        return None
+    for where, value in items:
+        found = _non_finite(value, where)
+        if found is not None:
+            return found
+    return None
+
+
+def check_finite(data: object) -> None:
+    """Raise :class:`NotFiniteError` naming the first NaN or infinity in ``data``.
+
+    ``data`` is a result as plain data: dicts, lists, floats and numpy arrays.
+    """
+    where = _non_finite(data)
+    if where is not None:
+        raise NotFiniteError(
+            f"{clipped(where)} is not finite: the result overflowed "
+            "(the values of the file are too large)"
+        )

@@ -28,6 +28,7 @@ from structure.report import analyze
 
 from ..export import write_dxf, write_parquet
 from ..plan import make_plan
+from ..serialization import check_finite
 from ..solve import solve_pose
 from ..sweep import parse_inputs, read_inputs, sweep
 from .parser import DRAWING_SUFFIXES, SWEEP_SUFFIXES
@@ -60,6 +61,7 @@ def _sweep(args: argparse.Namespace) -> None:
     _, plan = _plan(args)
     inputs = read_inputs(args.inputs, plan) if args.inputs else None
     result = sweep(plan, inputs, steps=args.steps)
+    check_finite(result.as_dict())
     if _suffix(args.out) == ".parquet":
         write_parquet(result, args.out)
         return

@@ -19,7 +19,7 @@ from ..explain.worked import explain_forces
 from ..forces import solve_forces
 from ..plan import make_plan
 from ..serialization import exact_forces_to_dict, forces_to_dict
-from .output import EXIT_OK, failed, print_json, title_lines, vector, write_lines
+from .output import EXIT_OK, check_finite, failed, print_json, title_lines, vector, write_lines
 from .plotting import check_plot, load_drawing
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
@@ -43,6 +43,7 @@ def run_forces(args: argparse.Namespace) -> int:
         if args.exact:
             return _print_exact_forces(report, make_plan(report), args.json)
         result = solve_forces(make_plan(report), minimum_norm=args.minimum_norm)
+        check_finite(forces_to_dict(result))
     except MechanismError as exc:
         return failed(exc, args.json)
     if args.json:

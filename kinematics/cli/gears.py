@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from structure.errors import MechanismError
+from structure.errors import MechanismError, UsageError
 from structure.readwrite.edgelist import read_edgelist
 
 from ..gears.trains import (
@@ -21,7 +21,7 @@ from ..gears.trains import (
     train_forces,
     train_losses,
 )
-from .output import EXIT_OK, failed, print_json, write_lines
+from .output import EXIT_OK, check_finite, failed, print_json, write_lines
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.model import Mechanism
@@ -45,9 +45,18 @@ class _TrainAnswer:
 
 
 def run_gears(args: argparse.Namespace) -> int:
-    """Analyse the gear train in ``args.file``; returns the exit code."""
+    """Analyse the gear train in ``args.file``; returns the exit code.
+
+    Raises
+    ------
+    UsageError
+        An ``--efficiency`` outside (0, 1] (the command line's exit status 2).
+    """
+    if args.efficiency is not None and not 0 < args.efficiency <= 1:
+        raise UsageError("--efficiency is the efficiency of each mesh, a number in (0, 1]")
     try:
         answer = _solve_train(read_edgelist(args.file), args.efficiency)
+        check_finite(_train_dict(answer))
     except MechanismError as exc:
         return failed(exc, args.json)
     if args.json:

@@ -25,6 +25,7 @@ from ..sweep import read_inputs, sweep
 from .output import (
     EXIT_OK,
     EXIT_USAGE,
+    check_finite,
     fail,
     failed,
     print_json,
@@ -52,6 +53,7 @@ def run_kinematics(args: argparse.Namespace) -> int:
         if args.exact:
             return _print_exact(report, plan, args.json)
         state = solve_pose(plan)
+        check_finite(state_to_dict(state))
         if args.plot:
             check_plot(args.plot)
             load_drawing().save_kinematics_sheet(report, plan, state, args.plot)
@@ -130,14 +132,18 @@ def run_sweep(args: argparse.Namespace) -> int:
         plan = make_plan(analyze(read_edgelist(args.file)))
         inputs = read_inputs(args.inputs, plan) if args.inputs else None
         result = sweep(plan, inputs, steps=args.steps)
+        check_finite(result.as_dict())
         if args.plot:
             load_drawing().save_sweep_figure(result, plan, args.plot)
         out = _sweep_lines(args, result)  # the sweep's ranges and balancing, computed when read
     except MechanismError as exc:
         return fail(str(exc))
     if args.csv:
-        with open(args.csv, "w", encoding="utf-8") as handle:
-            handle.write(result.to_csv())
+        try:
+            with open(args.csv, "w", encoding="utf-8") as handle:
+                handle.write(result.to_csv())
+        except OSError as exc:
+            return fail(f"cannot write {args.csv}: {exc.strerror or exc}")
         out.append(f"wrote {args.csv}")
     write_lines(out)
     return EXIT_OK

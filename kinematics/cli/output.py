@@ -1,7 +1,14 @@
 """What every command prints: JSON, the title lines, vectors, the error line and its exit code.
 
 Exit codes: :data:`EXIT_OK` (0), :data:`EXIT_MECHANISM` (1, a bad file or an impossible
-mechanism), :data:`EXIT_USAGE` (2, a usage error).
+mechanism), :data:`EXIT_USAGE` (2, a usage error), :data:`EXIT_BUG` (3, a bug in assur).
+No NaN or infinity is ever printed: :func:`~structure.validation.check_finite` refuses a
+result that holds one, and JSON is written with ``allow_nan=False`` (a strict parser reads it).
+
+>>> check_finite({"reactions": [{"force": [1.0, float("nan")]}]})
+Traceback (most recent call last):
+...
+structure.errors.NotFiniteError: reactions[0].force[1] is not finite: the result ov...
 """
 
 from __future__ import annotations
@@ -10,12 +17,15 @@ import json
 import sys
 from collections.abc import Iterable
 
-from structure.errors import MechanismError
+from structure.errors import MechanismError, clipped
+from structure.validation import check_finite
 
 __all__ = [
+    "EXIT_BUG",
     "EXIT_MECHANISM",
     "EXIT_OK",
     "EXIT_USAGE",
+    "check_finite",
     "fail",
     "failed",
     "print_json",
@@ -30,11 +40,23 @@ EXIT_OK = 0
 EXIT_MECHANISM = 1
 #: a usage error: bad options or option values
 EXIT_USAGE = 2
+#: a bug in assur (an exception that is no :class:`MechanismError`): please report it
+EXIT_BUG = 3
+
+#: the longest line of an error message written (a message may quote what the user wrote)
+_MESSAGE_WIDTH = 1000
 
 
 def print_json(data: object) -> None:
-    """Print ``data`` as one indented JSON object (UTF-8 kept as is)."""
-    print(json.dumps(data, indent=2, ensure_ascii=False))
+    """Print ``data`` as one indented JSON object (UTF-8 kept as is), never NaN or infinity.
+
+    Raises
+    ------
+    NotFiniteError
+        When ``data`` holds a NaN or an infinity.
+    """
+    check_finite(data)
+    print(json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False))
 
 
 def title_lines(mechanism, suffix: str = "") -> list[str]:
@@ -48,7 +70,12 @@ def write_lines(lines: Iterable[str]) -> None:
 
 
 def fail(message: str, code: int = EXIT_MECHANISM) -> int:
-    """Write ``error: message`` to stderr and give back the exit ``code``."""
+    """Write ``error: message`` to stderr and give back the exit ``code``.
+
+    Each line of the message is cut at 1000 characters.
+    """
+    if len(message) > _MESSAGE_WIDTH:
+        message = "\n".join(clipped(line, _MESSAGE_WIDTH) for line in message.split("\n"))
     sys.stderr.write(f"error: {message}\n")
     return code
 

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy
 
-from structure.errors import MechanismError, MobilityError
+from structure.errors import MechanismError, MobilityError, NumberError
 from structure.meshes import Mesh, is_planet, meshes
 from structure.model import Mechanism
 
@@ -81,6 +81,11 @@ def _coaxial_teeth(mechanism: Mechanism, found: list[Mesh]) -> dict[tuple[int, i
             z_other = mesh.zb if mesh.a == planet else mesh.za
             zp = sympy.Integer(z_planet) if z_planet is not None else None
             zo = sympy.Integer(z_other) if z_other is not None else None
+            if zp is None and zo is None:
+                raise MechanismError(
+                    f"mesh {mesh.pair.label} gives neither tooth number: coaxiality can find "
+                    "one unknown z per planet, not both of a mesh"
+                )
             if zp is None or zo is None:
                 # side 1 is the tooth number of a, side 2 of b
                 missing_a = (zp is None) == (mesh.a == planet)
@@ -452,7 +457,7 @@ def train_losses(mechanism: Mechanism, ratios: TrainRatios, mesh_efficiency: flo
     (2.4, -77.6, 0.97)
     """
     if not 0 < mesh_efficiency <= 1:
-        raise ValueError("the mesh efficiency is a number in (0, 1]")
+        raise NumberError("the mesh efficiency is a number in (0, 1]")
     forces = train_forces(mechanism, ratios)
     omega = {**{k: float(v) for k, v in ratios.ratios.items()}, mechanism.ground: 0.0}
     omega[ratios.inputs[0]] = 1.0

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 from typing import Any
 
 from ..errors import EdgeListError, EdgeListProblem, StatementError
@@ -77,6 +78,12 @@ def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
         raise EdgeListError(
             source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")]
         ) from None
+    except ValueError:  # an integer of more digits than Python converts
+        reason = f"invalid JSON: an integer of more than {sys.get_int_max_str_digits()} digits"
+        raise EdgeListError(source, [EdgeListProblem(0, "", reason)]) from None
+    except RecursionError:
+        reason = "invalid JSON: arrays or objects nested too deeply"
+        raise EdgeListError(source, [EdgeListProblem(0, "", reason)]) from None
     return mechanism_from_dict(data, source)
 
 
@@ -87,11 +94,12 @@ def _is_name(value: Any) -> bool:
 
 
 def _is_number(value: Any) -> bool:
-    return (
-        isinstance(value, (int, float))
-        and not isinstance(value, bool)
-        and math.isfinite(float(value))
-    )
+    if not isinstance(value, (int, float)) or isinstance(value, bool):
+        return False
+    try:
+        return math.isfinite(float(value))
+    except OverflowError:  # an integer beyond the float range
+        return False
 
 
 def _numbers(values: list[Any]) -> tuple[list[float], list[str | None]]:
@@ -472,5 +480,7 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
 
 
 def mechanism_to_json(mechanism: Mechanism, indent: int | None = 2) -> str:
-    """The JSON text of ``mechanism``."""
-    return json.dumps(mechanism_to_dict(mechanism), indent=indent, ensure_ascii=False)
+    """The JSON text of ``mechanism`` (strict JSON: its numbers are finite, as read)."""
+    return json.dumps(
+        mechanism_to_dict(mechanism), indent=indent, ensure_ascii=False, allow_nan=False
+    )

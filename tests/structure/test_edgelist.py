@@ -18,6 +18,7 @@ from structure.errors import EdgeListError, MechanismError
 from structure.model import DRIVER_KEYS, Driver, Mechanism, PairKind, PointDef
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist, write_edgelist
 from structure.readwrite.jsonformat import mechanism_from_json, mechanism_to_json
+from structure.validation import MAX_MAGNITUDE
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 FIXTURE_FILES = sorted(FIXTURES.glob("*.edges"))
@@ -536,7 +537,8 @@ NAME_CHARS = string.ascii_letters + string.digits + "_'"
 # a link called "name" cannot start a pair line (that line is a title), and a point called
 # "gear" on an H pair would read as the gear-mesh keyword
 names = st.text(NAME_CHARS, min_size=1, max_size=4).filter(lambda s: s not in ("name", "gear"))
-finite = st.floats(allow_nan=False, allow_infinity=False)
+# the readers take numbers within ±MAX_MAGNITUDE (1e150, issue 11)
+finite = st.floats(-MAX_MAGNITUDE, MAX_MAGNITUDE, allow_nan=False, allow_infinity=False)
 
 
 @st.composite

@@ -34,6 +34,7 @@ from structure.readwrite.pyslvs import (
     pyslvs_project,
 )
 from structure.report import analyze
+from structure.validation import MAX_MAGNITUDE
 from tests.conftest import FIXTURES
 from tests.pyslvs_sdist import PyslvsExample, PyslvsSdist
 
@@ -342,7 +343,8 @@ def test_bad_project_files_are_named(tmp_path, text, reason):
 
 # -------------------------------------------------------- property tests
 _names = st.from_regex(r"[A-Za-z_][A-Za-z0-9_]{0,6}", fullmatch=True)
-_numbers = st.floats(allow_nan=False, allow_infinity=False, width=64)
+# the readers take numbers within ±MAX_MAGNITUDE (1e150, issue 11)
+_numbers = st.floats(-MAX_MAGNITUDE, MAX_MAGNITUDE, allow_nan=False, allow_infinity=False, width=64)
 _colours = st.one_of(
     st.none(),
     st.sampled_from(["Green", "Blue", "red"]),

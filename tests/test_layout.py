@@ -80,7 +80,7 @@ def _floor(module: str) -> tuple[str, int]:
         return package, 3
     if package == "structure":
         return package, {"readwrite": 1, "explain": 2}.get(sub, 0)
-    return package, {"explain": 1, "figures": 1, "cli": 2, "__main__": 2}.get(sub, 0)
+    return package, {"explain": 1, "figures": 1, "html": 2, "cli": 2, "__main__": 2}.get(sub, 0)
 
 
 def _project_imports():

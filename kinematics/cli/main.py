@@ -30,6 +30,7 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "gears": ("gears", "run_gears"),
     "sweep": ("motion", "run_sweep"),
     "animate": ("motion", "run_animate"),
+    "report": ("report", "run_report"),
 }
 
 

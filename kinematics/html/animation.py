@@ -134,8 +134,11 @@ def _carried(poses: Mapping[str, np.ndarray], link: str, points: np.ndarray, n: 
     return np.stack([x, y], axis=-1)
 
 
-def _pins(report: StructuralReport, plan: SolvePlan) -> list[tuple[str, str, np.ndarray]]:
-    """Each revolute pair's point once: (name, the link that carries it, sketch xy)."""
+def _pins(report: StructuralReport, plan: SolvePlan) -> list[tuple[str, str, np.ndarray, bool]]:
+    """Each revolute pair's point once, then each other named point (a marker).
+
+    Each is ``(name, the link that carries it, sketch xy, whether it is a marker)``.
+    """
     m = plan.mechanism
     virtual = virtual_links(report)
     links_at: dict[str, list[str]] = {}
@@ -149,7 +152,11 @@ def _pins(report: StructuralReport, plan: SolvePlan) -> list[tuple[str, str, np.
             continue
         carrier = m.ground if m.ground in links else None
         carrier = carrier or next((lk for lk in links if lk not in virtual), links[0])
-        out.append((point, carrier, xy))
+        out.append((point, carrier, xy, False))
+    pair_points = {p.point for p in m.pairs}
+    for name, (owner, xy) in plan.points.items():
+        if name not in pair_points and owner not in virtual:
+            out.append((name, owner, np.asarray(xy, dtype=float), True))
     return out
 
 
@@ -165,7 +172,7 @@ class _Frames:
         self.pins = _pins(report, plan)
         poses, n = cycle.poses, self.count
         self.links = [_carried(poses, b.link, b.points, n) for b in self.bodies]
-        self.pin_xy = [_carried(poses, link, xy[None, :], n)[:, 0] for _, link, xy in self.pins]
+        self.pin_xy = [_carried(poses, link, xy[None, :], n)[:, 0] for _, link, xy, _ in self.pins]
         self.block_xy = [_carried(poses, s.block, s.at[None, :], n)[:, 0] for s in self.sliders]
         self.turns = [
             poses[s.guide][:, 2] if s.guide in poses else np.zeros(n) for s in self.sliders
@@ -230,9 +237,11 @@ def _drawing(frames: _Frames, plan: SolvePlan, cycle: Cycle, label: str) -> str:
     for name, values in cycle.sweep.points.items():
         path = values["position"]
         if len(path) > 1 and float(np.ptp(path, axis=0).max()) > 1e-9 * s:
+            if cycle.complete:  # a whole turn: the path closes
+                path = np.vstack([path, path[:1]])
             pts = _points_attribute(frames.flat(path))
             parts.append(f'<polyline class="trace" data-point="{escape(name)}" points="{pts}"/>')
-    for _, link, xy in frames.pins:
+    for _, link, xy, _ in frames.pins:
         if link == plan.mechanism.ground:
             x, y = frames.flat(xy)
             d = 0.035 * s
@@ -261,9 +270,10 @@ def _drawing(frames: _Frames, plan: SolvePlan, cycle: Cycle, label: str) -> str:
             f'width="{w:g}" height="{h:g}" transform="translate({x:g} {y:g}) rotate({deg:g})"/>'
         )
     r = 0.014 * s
-    for k, (name, _, _) in enumerate(frames.pins):
+    for k, (name, _, _, marker) in enumerate(frames.pins):
         x, y = frames.pin_xy[k][f][0], -frames.pin_xy[k][f][1]
-        parts.append(f'<circle class="pin" data-pin="{k}" cx="{x:g}" cy="{y:g}" r="{r:g}"/>')
+        kind, size = ("marker", 0.5 * r) if marker else ("pin", r)
+        parts.append(f'<circle class="{kind}" data-pin="{k}" cx="{x:g}" cy="{y:g}" r="{size:g}"/>')
         parts.append(
             f'<text class="pin-label" data-pin="{k}" x="{x + 1.5 * r:g}" y="{y - 1.5 * r:g}" '
             f'font-size="{0.045 * s:g}">{escape(name)}</text>'

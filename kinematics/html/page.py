@@ -56,7 +56,7 @@ def _cycle_html(contents: ReportContents, lang: str) -> str:
     parts.append(animation)
     caption = say(lang, "h_plots")
     parts.append(element("h3", escape(caption)))
-    svg = figure_svg(sweep_figure(cycle.sweep, plan), "fig-cycle", caption)
+    svg = figure_svg(sweep_figure(cycle.sweep, plan), "fig-cycle", caption, tight=False)
     parts.append(element("figure", svg))
     return "".join(parts)
 

@@ -39,7 +39,8 @@ def mechanism_html(contents: ReportContents, lang: str) -> str:
         fig = draw_mechanism(contents.report, contents.plan, contents.state)
         if contents.mechanism.loads:
             draw_loads(fig.axes[0], contents.plan, contents.state)
-        parts.append(element("figure", figure_svg(fig, "fig-mechanism", say(lang, "h_drawing"))))
+        svg = figure_svg(fig, "fig-mechanism", say(lang, "h_drawing"), tight=False)
+        parts.append(element("figure", svg))
     caption = say(lang, "h_graph")
     parts.append(element("h3", escape(caption)))
     parts.append(element("figure", figure_svg(draw_graph(contents.report), "fig-graph", caption)))

@@ -56,7 +56,7 @@ def _unique_ids(svg: str, prefix: str) -> str:
     )
 
 
-def figure_svg(fig: Figure, prefix: str, label: str) -> str:
+def figure_svg(fig: Figure, prefix: str, label: str, tight: bool = True) -> str:
     """The figure as an ``<svg>`` element to inline in an HTML page.
 
     Parameters
@@ -67,6 +67,9 @@ def figure_svg(fig: Figure, prefix: str, label: str) -> str:
         Unique in the page: the ``id`` of the ``<svg>`` and the prefix of every id inside.
     label : str
         What the figure shows, for readers that cannot see it (``aria-label``).
+    tight : bool
+        Crop to what is drawn (matplotlib's ``bbox_inches="tight"``, which draws the figure
+        twice); ``False`` for a figure whose artists all lie inside it, to save that time.
 
     Returns
     -------
@@ -79,7 +82,9 @@ def figure_svg(fig: Figure, prefix: str, label: str) -> str:
         FigureCanvasAgg(fig)
     buffer = io.StringIO()
     with rc_context({"svg.hashsalt": prefix, "svg.fonttype": "path"}):
-        fig.savefig(buffer, format="svg", bbox_inches="tight", metadata={"Date": None})
+        fig.savefig(
+            buffer, format="svg", bbox_inches="tight" if tight else None, metadata={"Date": None}
+        )
     svg = buffer.getvalue()
     for pattern in _DROPPED:
         svg = pattern.sub("", svg, count=1)

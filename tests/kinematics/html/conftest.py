@@ -108,7 +108,17 @@ def reports(tmp_path_factory) -> Reports:
 
 
 @pytest.fixture(scope="session")
-def all_reports(reports: Reports) -> Reports:
-    """The session's reports with every fixture's English report made (in parallel)."""
-    reports.make(STEMS)
+def all_reports(request, reports: Reports) -> Reports:
+    """The session's reports, the English ones of the collected tests' fixtures made at once.
+
+    The tests parametrized by ``stem`` that ask for this fixture name the reports to
+    make (all of them on a whole run, a few under ``-k``), in parallel.
+    """
+    wanted = {
+        item.callspec.params["stem"]
+        for item in request.session.items
+        if "all_reports" in getattr(item, "fixturenames", ())
+        and "stem" in getattr(getattr(item, "callspec", None), "params", {})
+    }
+    reports.make(sorted(wanted))
     return reports

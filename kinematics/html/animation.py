@@ -70,7 +70,7 @@ def _ring_order(points: list[np.ndarray]) -> list[np.ndarray]:
 
 
 def _bodies(report: StructuralReport, plan: SolvePlan, reach: float) -> list[_Body]:
-    """Each moving link's outline through its pair points and markers (a spoke when alone)."""
+    """Each moving link's outline through its pair points and markers (a wheel's spoke)."""
     m = plan.mechanism
     colour, _ = palette(report)
     virtual = virtual_links(report)
@@ -87,9 +87,10 @@ def _bodies(report: StructuralReport, plan: SolvePlan, reach: float) -> list[_Bo
             if owner == link:
                 named.setdefault(name, np.asarray(xy, dtype=float))
         points = list(named.values())
-        if len(points) == 1:  # a wheel on its axle: a spoke shows it turning
+        slides = any(p.kind is PairKind.P for p in m.pairs_of(link))
+        if len(points) == 1 and not slides:  # a wheel on its axle: a spoke shows it turning
             points.append(points[0] + np.array([0.12 * reach, 0.0]))
-        if not points:
+        if len(points) < 2:  # a block alone: its slider draws it
             continue
         ring = len(points) >= 3
         ordered = np.array(_ring_order(points) if ring else points)
@@ -230,7 +231,9 @@ def _points_attribute(flat: list[float]) -> str:
     return " ".join(f"{flat[i]:g},{flat[i + 1]:g}" for i in range(0, len(flat), 2))
 
 
-def _drawing(frames: _Frames, plan: SolvePlan, cycle: Cycle, label: str) -> str:
+def _drawing(
+    frames: _Frames, report: StructuralReport, plan: SolvePlan, cycle: Cycle, label: str
+) -> str:
     """The SVG at the sketch's pose: traces, ground, guides, links, sliders, pins, labels."""
     s, f = frames.size, cycle.sketch
     parts = []
@@ -263,11 +266,14 @@ def _drawing(frames: _Frames, plan: SolvePlan, cycle: Cycle, label: str) -> str:
             f'style="stroke: {body.colour}; fill: {body.colour}" points="{pts}"/>'
         )
     w, h = 0.09 * s, 0.05 * s
-    for k in range(len(frames.sliders)):
+    colour, _ = palette(report)
+    for k, slider in enumerate(frames.sliders):
         x, y, deg = frames.slider_place(k, f)
+        tint = to_hex(colour.get(slider.block, OTHER_COLOUR))
         parts.append(
             f'<rect class="slider" data-slider="{k}" x="{-w / 2:g}" y="{-h / 2:g}" '
-            f'width="{w:g}" height="{h:g}" transform="translate({x:g} {y:g}) rotate({deg:g})"/>'
+            f'width="{w:g}" height="{h:g}" style="fill: {tint}; stroke: {tint}" '
+            f'transform="translate({x:g} {y:g}) rotate({deg:g})"/>'
         )
     r = 0.014 * s
     for k, (name, _, _, marker) in enumerate(frames.pins):
@@ -310,7 +316,7 @@ def animation_html(report: StructuralReport, plan: SolvePlan, cycle: Cycle, lang
     """
     frames = _Frames(report, plan, cycle)
     readout = [inputs_text(plan, row) for row in cycle.sweep.inputs]
-    drawing = _drawing(frames, plan, cycle, say(lang, "h_animation"))
+    drawing = _drawing(frames, report, plan, cycle, say(lang, "h_animation"))
     play = element(
         "button",
         escape(say(lang, "play")),

@@ -123,8 +123,11 @@ _TIED = """() => Array.from(document.querySelectorAll("[data-source]")).map(e =>
     text: e.innerText, cell: e.tagName === "TD"
 }))"""
 
-_LINKS = """() => Array.from(document.querySelectorAll("#cycle-svg [data-link]"))
-    .map(e => e.getAttribute("points"))"""
+#: what the script moves: the links' outlines, the sliders, the pins, the guides
+_POSE = """() => Array.from(document.getElementById("cycle-svg").querySelectorAll(
+        "[data-link], [data-slider], [data-pin], [data-guide]"
+    )).map(e => ["points", "transform", "cx", "cy", "x1", "y1", "x2", "y2"]
+        .map(name => e.getAttribute(name)).join(" "))"""
 
 
 def _check_numbers(tab: Tab, stem: str) -> None:
@@ -143,22 +146,22 @@ def _check_numbers(tab: Tab, stem: str) -> None:
 
 
 def _check_slider(tab: Tab, picture: bool = False) -> None:
-    """Scrubbing to another pose moves the drawn links and the readout (and the picture)."""
+    """Scrubbing to another pose moves the drawn pose and the readout (and the picture)."""
     count = int(tab.page.get_attribute("#cycle-slider", "max")) + 1
     sketch = int(tab.frame())
     assert count >= 2, "an animation of one pose"
     other = (sketch + max(1, count // 3)) % count
-    before = tab.page.evaluate(_LINKS)
+    before = tab.page.evaluate(_POSE)
     shot = tab.page.locator("#cycle-svg").screenshot() if picture else b""
     readout = tab.page.inner_text("#cycle-readout")
     tab.scrub(other)
     assert tab.frame() == str(other)
-    assert tab.page.evaluate(_LINKS) != before, "the links did not move"
+    assert tab.page.evaluate(_POSE) != before, "the drawn pose did not move"
     if picture:
         assert tab.page.locator("#cycle-svg").screenshot() != shot, "the picture did not change"
     assert tab.page.inner_text("#cycle-readout") != readout
     tab.scrub(sketch)
-    assert tab.page.evaluate(_LINKS) == before, "back at the sketch, the links are not"
+    assert tab.page.evaluate(_POSE) == before, "back at the sketch, the drawing is not"
 
 
 @pytest.mark.parametrize("stem", STEMS)

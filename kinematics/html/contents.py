@@ -32,8 +32,10 @@ from ..solve import solve_pose
 from ..state import KinematicState
 from .cycle import Cycle, solve_cycle
 from .gearing import TrainSummary, train_summary
+from .markup import note
+from .phrases import say
 
-__all__ = ["APPLIED_LOADS", "Note", "ReportContents", "gather"]
+__all__ = ["APPLIED_LOADS", "Note", "ReportContents", "gather", "part_note"]
 
 #: the load statements that make a force analysis worth showing (gravity alone moves no mass)
 APPLIED_LOADS = ("force", "moment", "mass")
@@ -144,3 +146,9 @@ def gather(mechanism: Mechanism, steps: int = 120) -> ReportContents:
         train=_train(mechanism, notes),
         notes=notes,
     )
+
+
+def part_note(contents: ReportContents, part: str, lang: str) -> str:
+    """The one-line note (``<p class="note" data-note="…">``) that stands for ``part``."""
+    found = contents.notes[part]
+    return note(say(lang, found.key, reason=found.reason), found.key)

@@ -22,7 +22,7 @@ from structure.explain.structural import LANGUAGES, explain_structure
 from ..explain import explain_forces, explain_kinematics
 from ..figures import sweep_figure
 from .animation import animation_html
-from .contents import ReportContents
+from .contents import ReportContents, part_note
 from .cycle import inputs_text
 from .gearing import gears_html
 from .markup import element, note
@@ -34,17 +34,11 @@ from .svg import figure_svg
 __all__ = ["SECTIONS", "report_page"]
 
 
-def _note_of(contents: ReportContents, part: str, lang: str) -> str:
-    """The one-line note that stands for ``part`` of the report."""
-    found = contents.notes[part]
-    return note(say(lang, found.key, reason=found.reason), found.key)
-
-
 def _cycle_html(contents: ReportContents, lang: str) -> str:
     """The animation over the cycle and the plots over it (or the note why there is none)."""
     cycle, plan = contents.cycle, contents.plan
     if cycle is None or plan is None:
-        return _note_of(contents, "cycle", lang)
+        return part_note(contents, "cycle", lang)
     parts = [element("h3", escape(say(lang, "h_animation")))]
     count = len(cycle.sweep.inputs)
     parts.append(element("p", escape(say(lang, "animation_help", count=count))))
@@ -76,14 +70,14 @@ def _worked_html(contents: ReportContents, lang: str) -> str:
     parts.append(_demoted(explain_structure(report, lang, "html")))
     parts.append(element("h3", escape(say(lang, "h_worked_kinematics"))))
     if plan is None or contents.state is None:
-        parts.append(_note_of(contents, "pose", lang))
+        parts.append(part_note(contents, "pose", lang))
     else:
         parts.append(
             _explained(lambda: explain_kinematics(report, plan, contents.state, lang, "html"), lang)
         )
     parts.append(element("h3", escape(say(lang, "h_worked_forces"))))
     if plan is None or contents.forces is None:
-        parts.append(_note_of(contents, "forces", lang))
+        parts.append(part_note(contents, "forces", lang))
     else:
         parts.append(
             _explained(lambda: explain_forces(report, plan, contents.forces, lang, "html"), lang)
@@ -102,7 +96,7 @@ def _explained(explain: Callable[[], str], lang: str) -> str:
 def _gears_section(contents: ReportContents, lang: str) -> str:
     """The gear train, or the note: no gears, or the error."""
     if contents.train is None:
-        return _note_of(contents, "gears", lang)
+        return part_note(contents, "gears", lang)
     return gears_html(contents.train, contents.mechanism, lang)
 
 

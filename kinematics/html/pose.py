@@ -22,8 +22,8 @@ from structure.explain.mathml import latex_to_mathml
 
 from ..figures import acceleration_polygon, force_polygon, velocity_polygon
 from ..figures.forces import polygon_entries
-from .contents import ReportContents
-from .markup import element, format_number, note, number_cell, table
+from .contents import ReportContents, part_note
+from .markup import element, format_number, number_cell, table
 from .phrases import say
 from .svg import figure_svg
 
@@ -83,8 +83,7 @@ def _point_rows(data: Mapping[str, Any]) -> list[list[str]]:
 def kinematics_html(contents: ReportContents, lang: str) -> str:
     """Drivers, links and points at the sketch pose, the velocity and acceleration polygons."""
     if contents.kinematics is None or contents.plan is None or contents.state is None:
-        found = contents.notes["pose"]
-        return note(say(lang, found.key, reason=found.reason), found.key)
+        return part_note(contents, "pose", lang)
     data = contents.kinematics
     parts = [element("h3", escape(say(lang, "h_drivers"))), _drivers(contents, lang)]
     parts.append(element("h3", escape(say(lang, "h_links"))))
@@ -164,8 +163,7 @@ def forces_html(contents: ReportContents, lang: str) -> str:
     """Reactions, balancing, the virtual-power check and the force polygons (or the note)."""
     solution, data, plan = contents.forces, contents.forces_dict, contents.plan
     if solution is None or data is None or plan is None:
-        found = contents.notes["forces"]
-        return note(say(lang, found.key, reason=found.reason), found.key)
+        return part_note(contents, "forces", lang)
     parts = [element("h3", escape(say(lang, "h_reactions", order=" → ".join(data["order"]))))]
     headings = [say(lang, "point"), say(lang, "acting"), say(lang, "kind")]
     headings += ["F_x (N)", "F_y (N)", "|F| (N)", say(lang, "couple")]

@@ -22,8 +22,8 @@ from structure.explain.mathml import latex_to_mathml
 from ..figures import draw_graph, draw_mechanism
 from ..figures.forces import draw_loads
 from ..figures.style import palette
-from .contents import ReportContents
-from .markup import element, note, table
+from .contents import ReportContents, part_note
+from .markup import element, table
 from .phrases import say
 from .svg import figure_svg
 
@@ -34,7 +34,7 @@ def mechanism_html(contents: ReportContents, lang: str) -> str:
     """The mechanism at the sketch pose (or the note why not) and its kinematic graph."""
     parts = [element("h3", escape(say(lang, "h_drawing")))]
     if contents.state is None or contents.plan is None:
-        parts.append(_note_of(contents, "pose", lang))
+        parts.append(part_note(contents, "pose", lang))
     else:
         fig = draw_mechanism(contents.report, contents.plan, contents.state)
         if contents.mechanism.loads:
@@ -45,12 +45,6 @@ def mechanism_html(contents: ReportContents, lang: str) -> str:
     parts.append(element("h3", escape(caption)))
     parts.append(element("figure", figure_svg(draw_graph(contents.report), "fig-graph", caption)))
     return "".join(parts)
-
-
-def _note_of(contents: ReportContents, part: str, lang: str) -> str:
-    """The one-line note that stands for ``part`` of the report."""
-    found = contents.notes[part]
-    return note(say(lang, found.key, reason=found.reason), found.key)
 
 
 def w_latex(data: Mapping[str, Any]) -> str:

@@ -165,7 +165,7 @@ def _check_slider(tab: Tab, picture: bool = False) -> None:
 
 
 @pytest.mark.parametrize("stem", STEMS)
-def test_the_report_renders_in_chromium(all_reports, tab, stem):
+def test_the_report_renders_in_chromium(tab, all_reports, stem):
     """The page loads without error or request, is not blank, lays out its formulas and numbers."""
     tab.open(all_reports.path(stem))
     assert tab.errors == []
@@ -183,13 +183,13 @@ def test_the_report_renders_in_chromium(all_reports, tab, stem):
 
 
 @pytest.mark.parametrize("stem", ["jansen", "ch3_3_1_slider_power", "gear_pair", "ch2_2_3_tangent"])
-def test_the_slider_changes_the_picture(all_reports, tab, stem):
+def test_the_slider_changes_the_picture(tab, all_reports, stem):
     """Screenshots of the animation at two poses differ (turning, sliding, gears, a stretch)."""
     tab.open(all_reports.path(stem))
     _check_slider(tab, picture=True)
 
 
-def test_the_play_button_runs_and_stops_the_animation(all_reports, tab):
+def test_the_play_button_runs_and_stops_the_animation(tab, all_reports):
     tab.open(all_reports.path("jansen"))
     button = tab.page.locator("#cycle-play")
     assert button.inner_text() == "Play"
@@ -204,7 +204,7 @@ def test_the_play_button_runs_and_stops_the_animation(all_reports, tab):
     assert tab.errors == []
 
 
-def test_a_stretch_plays_to_and_fro(all_reports, tab):
+def test_a_stretch_plays_to_and_fro(tab, all_reports):
     """Short of a whole turn, play turns back at each end instead of jumping across."""
     tab.open(all_reports.path("ch2_2_3_tangent"))
     count = int(tab.page.get_attribute("#cycle-slider", "max")) + 1
@@ -218,7 +218,7 @@ def test_a_stretch_plays_to_and_fro(all_reports, tab):
     assert tab.errors == []
 
 
-def test_fractions_are_laid_out_as_fractions(all_reports, tab):
+def test_fractions_are_laid_out_as_fractions(tab, all_reports):
     """The Willis relations' fractions stand taller than one line: MathML is rendered natively."""
     tab.open(all_reports.path("exam_2_planetary"))
     heights = tab.page.evaluate(
@@ -230,7 +230,7 @@ def test_fractions_are_laid_out_as_fractions(all_reports, tab):
     assert all(whole > 1.6 * numerator > 0 for whole, numerator in heights)
 
 
-def test_the_vietnamese_report_renders(reports, tab):
+def test_the_vietnamese_report_renders(tab, reports):
     tab.open(reports.path("ch3_3_4_fourbar", "vi"))
     assert tab.errors == []
     assert tab.page.get_attribute("html", "lang") == "vi"
@@ -240,7 +240,7 @@ def test_the_vietnamese_report_renders(reports, tab):
     assert sizes and all(w > 0 and h > 0 for w, h, _ in sizes)
 
 
-def test_printing_on_a4_hides_the_controls(all_reports, browser):
+def test_printing_on_a4_hides_the_controls(browser, all_reports):
     """The print stylesheet: no contents box or controls, one main section per page, A4 pages."""
     page = browser.new_page()
     try:

@@ -67,11 +67,16 @@ def _tied(value: object, path: str, tag: str = "td") -> str:
     )
 
 
-def _counts(data: Mapping[str, Any], lang: str) -> str:
-    """The counts table (as given, and after replacement when higher pairs were replaced)."""
-    replaced = data["replacements"]
+def _counts(contents: ReportContents, lang: str) -> str:
+    """The counts table (as given, and after replacement when higher pairs were replaced).
+
+    The counts after replacement are the classify JSON's ``replaced`` (n, P5, P4, W); its
+    r_th and W_th, which the JSON leaves out, come from the same analysis.
+    """
+    data = contents.structure
+    replaced = contents.report.replaced_mobility if data["replacements"] else None
     headings = [say(lang, "quantity"), say(lang, "meaning"), say(lang, "given")]
-    if replaced:
+    if replaced is not None:
         headings.append(say(lang, "after_replacement"))
     rows = []
     for symbol, key, meaning in (
@@ -83,9 +88,10 @@ def _counts(data: Mapping[str, Any], lang: str) -> str:
         ("W", "W", "q_w"),
     ):
         row = [escape(symbol), escape(say(lang, meaning)), _tied(data[key], key)]
-        if replaced:
-            after = data["replaced"].get(key, 0)
-            row.append(_tied(after, f"replaced/{key}") if key in data["replaced"] else "—")
+        if replaced is not None and key in data["replaced"]:
+            row.append(_tied(data["replaced"][key], f"replaced/{key}"))
+        elif replaced is not None:
+            row.append(str(replaced.r if key == "redundant" else replaced.W_passive))
         rows.append(row)
     formula = element("div", latex_to_mathml(w_latex(data), display=True), class_="formula")
     return table(headings, rows) + formula
@@ -164,7 +170,7 @@ def _groups(contents: ReportContents, lang: str) -> str:
 def structure_html(contents: ReportContents, lang: str) -> str:
     """The structural analysis: counts and W, corrections, replacements, groups, formula."""
     data = contents.structure
-    parts = [element("h3", escape(say(lang, "h_counts"))), _counts(data, lang)]
+    parts = [element("h3", escape(say(lang, "h_counts"))), _counts(contents, lang)]
     parts.append(_redundant(data, lang))
     parts.append(element("h3", escape(say(lang, "h_replaced"))))
     parts.append(_replacements(data, lang))

@@ -7,7 +7,8 @@ Floors, from the bottom:
 - ``structure``: the analysis (model, validation, rigidity, mobility,
   replacement, assur, report, ...) < ``structure.readwrite`` < ``structure.explain``;
 - ``kinematics``: the solvers (plan, solve, sweep, forces, gears, ...) <
-  ``kinematics.explain`` and ``kinematics.figures`` < ``kinematics.cli``;
+  ``kinematics.explain`` and ``kinematics.figures`` < ``kinematics.html`` (the report page,
+  beside the CLI on the top floor) and ``kinematics.cli``;
 - ``structure`` < ``kinematics``: structure never imports kinematics;
 - each package's ``__init__`` is the façade on top that re-exports its public API.
 """

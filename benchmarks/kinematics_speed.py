@@ -1,40 +1,39 @@
-"""How fast the kinematics solve a crank turn, next to a hand-written solver and pylinkage.
+"""How fast the public sweep solves a crank turn, next to a hand-written solver and pylinkage.
 
 For the four-bar (``fixtures/fourbar.edges``, coupler point M) and Jansen's
 leg (``fixtures/jansen.edges``, foot F), one crank turn of N poses
 (N = 10^3, 10^4, 10^5 by default) is timed side by side in one process:
 
-* **ours**: ``kinematics.solve.solve_poses`` plus ``Motion.point`` for the
-  coupler point / foot. The solve finds every pin's position, velocity and
-  acceleration and keeps each link's motion as a frame; a link's angle θ,
-  ω and ε are computed from it when first read (the angle needs an
-  ``arctan2``, about 30 ns per link and pose). The plan is made once, outside
-  the timing.
-* **ours all**: the same, then every link's ``q, qd, qdd`` (N, 3) arrays
-  (angles included) and every named point's position, velocity and
-  acceleration read out: everything the hand solver gives and more.
+* **ours**: ``kinematics.sweep(plan, inputs)``, then every named point's
+  position, velocity and acceleration read out of the result (the plan is
+  made once, outside the timing): what a user calls.
+* **ours pos**: ``sweep(plan, inputs, rates=False)``, every named point's
+  position (before that path existed: the full sweep, positions read out).
 * **hand**: a minimal closed-form numpy solver of the same linkage, written in
   this file (crank, circle–circle intersections with the sketch's assembly
   mode, rigid points as linear combinations), vectorised over the poses:
   positions, velocities and accelerations of every pin and of the coupler
-  point / foot.
+  point / foot; **hand pos** the same, positions only.
 * **pylinkage** (only if it is installed; it is not a dependency of assur):
   ``Linkage.step_fast`` (numba, positions only) and
   ``Linkage.step_fast_with_kinematics`` (numba, positions + velocities +
   accelerations of every joint), over the same poses.
 
-Time per pose is the best of a few runs. Before any timing, ours and hand are
-cross-checked at every N: positions, velocities and accelerations of every
-named point agree to 1e-9 relative (the largest difference over the largest
-magnitude of that quantity); pylinkage is compared with ours too (reported,
-not a gate).
+Times are medians over interleaved rounds (one run of each per round), so the
+noise of a shared machine falls on all alike; the load average is printed
+before and after. Before any timing, ours and hand are cross-checked:
+positions, velocities and accelerations of every named point agree to 1e-9
+relative (the largest difference over the largest magnitude of that
+quantity); pylinkage is compared with ours too (reported, not a gate).
 
-Goals: at N = 10^5, ours within 1.5x of the hand-written solver, and at least
-2x faster than pylinkage (with numba) for positions + velocities +
-accelerations.
+The eight-bar with a class III triad (``fixtures/eightbar_triad.edges``, its
+triad solved by Newton) and the four-bar are timed in the same run over 10^4
+poses (``--triad-poses``), both through ``sweep()`` with every joint read out.
 
-The eight-bar with a class III triad (``fixtures/eightbar_triad.edges``,
-solved by Newton per pose) is timed over 10^4 poses (``--triad-poses``).
+Goals: at N = 10^5, ours within 1.5x of the hand-written solver (with rates,
+and positions only), and at least 2x faster than pylinkage (with numba) for
+positions + velocities + accelerations; the eight-bar within 10x of the
+four-bar per pose. The verdicts, each with its ratio, are printed last.
 
 ``--profile`` prints the cProfile top functions of ours at the largest N.
 
@@ -44,15 +43,17 @@ Exit status: 0 all goals met, 1 ours and hand disagree (or a solve failed),
 Usage::
 
     python benchmarks/kinematics_speed.py [--sizes 1000 10000 100000]
-        [--repeat R] [--triad-poses 10000] [--profile] [--no-pylinkage]
+        [--rounds R] [--triad-poses 10000] [--profile] [--no-pylinkage]
 """
 
 from __future__ import annotations
 
 import argparse
 import cProfile
+import inspect
 import io
 import math
+import os
 import pstats
 import sys
 import time
@@ -66,13 +67,14 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from kinematics.plan import SolvePlan, make_plan  # noqa: E402
-from kinematics.solve import solve_poses  # noqa: E402
+from kinematics.sweep import sweep  # noqa: E402
 from structure.readwrite.edgelist import read_edgelist  # noqa: E402
 from structure.report import analyze  # noqa: E402
 
 FIXTURES = ROOT / "fixtures"
 GOAL_HAND = 1.5  # ours / hand at N = 10^5, at most
 GOAL_PEER = 2.0  # pylinkage (pos + vel + acc) / ours at N = 10^5, at least
+GOAL_TRIAD = 10.0  # eight-bar (class III triad) / four-bar, per pose, at most
 RTOL = 1e-9
 
 try:  # an optional peer, installed in the benchmark environment only
@@ -94,23 +96,27 @@ def _plan(name: str) -> SolvePlan:
 Kin = tuple
 
 
-def _ground(p: np.ndarray) -> Kin:
-    return (float(p[0]), float(p[1]), 0.0, 0.0, 0.0, 0.0)
+def _ground(p: np.ndarray, rates: bool = True) -> Kin:
+    return (float(p[0]), float(p[1]), 0.0, 0.0, 0.0, 0.0) if rates else (float(p[0]), float(p[1]))
 
 
-def _crank(pivot: np.ndarray, tip: np.ndarray, phi: np.ndarray, omega: float) -> Kin:
+def _crank(
+    pivot: np.ndarray, tip: np.ndarray, phi: np.ndarray, omega: float, rates: bool = True
+) -> Kin:
     """The crank tip turned by ``phi`` about ``pivot``; constant ω, so a = −ω² r."""
     c, s = np.cos(phi), np.sin(phi)
     dx, dy = tip - pivot
     rx, ry = c * dx - s * dy, s * dx + c * dy
+    if not rates:
+        return (pivot[0] + rx, pivot[1] + ry)
     w2 = omega * omega
     return (pivot[0] + rx, pivot[1] + ry, -omega * ry, omega * rx, -w2 * rx, -w2 * ry)
 
 
 def _rrr(p: Kin, r1: float, q: Kin, r2: float, sign: float) -> Kin:
     """The pin at distance r1 from ``p`` and r2 from ``q`` on the side ``sign``."""
-    px, py, pvx, pvy, pax, pay = p
-    qx, qy, qvx, qvy, qax, qay = q
+    px, py = p[:2]
+    qx, qy = q[:2]
     ex, ey = qx - px, qy - py
     d2 = ex * ex + ey * ey
     d = np.sqrt(d2)
@@ -118,6 +124,10 @@ def _rrr(p: Kin, r1: float, q: Kin, r2: float, sign: float) -> Kin:
     h = sign * np.sqrt(r1 * r1 - a * a)
     cx = px + (a * ex - h * ey) / d
     cy = py + (a * ey + h * ex) / d
+    if len(p) == 2:  # positions only
+        return (cx, cy)
+    pvx, pvy, pax, pay = p[2:]
+    qvx, qvy, qax, qay = q[2:]
     # (c − p)·(v_c − v_p) = 0 and (c − q)·(v_c − v_q) = 0, by Cramer's rule
     ux, uy, wx, wy = cx - px, cy - py, cx - qx, cy - qy
     det = ux * wy - uy * wx
@@ -141,7 +151,7 @@ def _side(p: np.ndarray, q: np.ndarray, c: np.ndarray) -> float:
 def _rigid(p: Kin, q: Kin, alpha: float, beta: float) -> Kin:
     """The point p + α(q − p) + β·J(q − p): linear in p and q, so in their rates too."""
     out = []
-    for i in (0, 2, 4):
+    for i in range(0, len(p), 2):
         dx, dy = q[i] - p[i], q[i + 1] - p[i + 1]
         out += [p[i] + alpha * dx - beta * dy, p[i + 1] + alpha * dy + beta * dx]
     return tuple(out)
@@ -162,7 +172,7 @@ def _as_arrays(points: dict[str, Kin], n: int) -> dict[str, tuple[np.ndarray, ..
     return out
 
 
-def hand_fourbar(plan: SolvePlan) -> Callable[[np.ndarray], dict[str, Kin]]:
+def hand_fourbar(plan: SolvePlan, rates: bool = True) -> Callable[[np.ndarray], dict[str, Kin]]:
     """The four-bar A-B-C-D with coupler point M, from the sketch coordinates."""
     s = {k: v[1] for k, v in plan.points.items()}
     omega = plan.drivers[0].speed
@@ -170,17 +180,17 @@ def hand_fourbar(plan: SolvePlan) -> Callable[[np.ndarray], dict[str, Kin]]:
     bc, dc = float(np.hypot(*(c - b))), float(np.hypot(*(c - d)))
     sign = _side(b, d, c)
     alpha, beta = _coefficients(b, c, m)
-    ga, gd = _ground(a), _ground(d)
+    ga, gd = _ground(a, rates), _ground(d, rates)
 
     def solve(phi: np.ndarray) -> dict[str, Kin]:
-        pb = _crank(a, b, phi, omega)
+        pb = _crank(a, b, phi, omega, rates)
         pc = _rrr(pb, bc, gd, dc, sign)
         return {"A": ga, "D": gd, "B": pb, "C": pc, "M": _rigid(pb, pc, alpha, beta)}
 
     return solve
 
 
-def hand_jansen(plan: SolvePlan) -> Callable[[np.ndarray], dict[str, Kin]]:
+def hand_jansen(plan: SolvePlan, rates: bool = True) -> Callable[[np.ndarray], dict[str, Kin]]:
     """Jansen's leg: O, Z ground; M crank; A, C, E circle–circle; D on ZA; F on CE."""
     s = {k: v[1] for k, v in plan.points.items()}
     omega = plan.drivers[0].speed
@@ -193,10 +203,10 @@ def hand_jansen(plan: SolvePlan) -> Callable[[np.ndarray], dict[str, Kin]]:
     sa, sc, se = _side(m, z, a), _side(m, z, c), _side(d, c, e)
     d_ab = _coefficients(z, a, d)
     f_ab = _coefficients(c, e, f)
-    go, gz = _ground(o), _ground(z)
+    go, gz = _ground(o, rates), _ground(z, rates)
 
     def solve(phi: np.ndarray) -> dict[str, Kin]:
-        pm = _crank(o, m, phi, omega)
+        pm = _crank(o, m, phi, omega, rates)
         pa = _rrr(pm, ma, gz, za, sa)
         pc = _rrr(pm, mc, gz, zc, sc)
         pd = _rigid(gz, pa, *d_ab)
@@ -264,13 +274,19 @@ def pl_jansen(plan: SolvePlan, n: int):
 # ---------------------------------------------------------------------------
 
 
-def best_of(fn: Callable[[], object], repeat: int) -> float:
-    best = math.inf
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t)
-    return best
+def interleaved(fns: dict[str, Callable[[], object]], rounds: int) -> dict[str, float]:
+    """The median time of each function over ``rounds`` rounds, one run of each per round.
+
+    Running them in turn spreads the machine's noise (other processes on the
+    shared cores) over all of them alike; the median drops the outliers.
+    """
+    times: dict[str, list[float]] = {k: [] for k in fns}
+    for _ in range(rounds):
+        for name, fn in fns.items():
+            t = time.perf_counter()
+            fn()
+            times[name].append(time.perf_counter() - t)
+    return {k: float(np.median(v)) for k, v in times.items()}
 
 
 def max_rel(ours: np.ndarray, ref: np.ndarray) -> float:
@@ -279,13 +295,33 @@ def max_rel(ours: np.ndarray, ref: np.ndarray) -> float:
     return diff / scale if scale > 0 else diff
 
 
+def _supports_positions_only() -> bool:
+    """Whether ``sweep`` has its positions-only path (``rates=False``)."""
+    return "rates" in inspect.signature(sweep).parameters
+
+
+def sweep_every_joint(plan: SolvePlan, inputs: np.ndarray, rates: bool) -> list[np.ndarray]:
+    """The public sweep, then every named point's arrays read out (what the hand solver gives)."""
+    if rates:
+        result = sweep(plan, inputs)
+        keys = ("position", "velocity", "acceleration")
+    elif _supports_positions_only():
+        result = sweep(plan, inputs, rates=False)
+        keys = ("position",)
+    else:  # before the positions-only path: the full sweep is what a user had
+        result = sweep(plan, inputs)
+        keys = ("position",)
+    return [result.points[name][key] for name in plan.points for key in keys]
+
+
 @dataclass
 class Row:
     linkage: str
     n: int
-    ours: float
+    ours: float  # sweep(), pos + vel + acc of every joint
     hand: float
-    ours_all: float = 0.0
+    ours_pos: float  # sweep(rates=False), positions of every joint
+    hand_pos: float
     pl_pos: float | None = None
     pl_pva: float | None = None
     dev_hand: float = 0.0
@@ -297,94 +333,100 @@ class Row:
 class Case:
     name: str
     fixture: str
-    point: str  # the coupler point / foot timed through Motion.point
     hand: Callable
     peer: Callable
 
 
 CASES = (
-    Case("four-bar", "fourbar", "M", hand_fourbar, pl_fourbar),
-    Case("Jansen", "jansen", "F", hand_jansen, pl_jansen),
+    Case("four-bar", "fourbar", hand_fourbar, pl_fourbar),
+    Case("Jansen", "jansen", hand_jansen, pl_jansen),
 )
 
 
-def measure(case: Case, plan: SolvePlan, n: int, repeat: int, use_peer: bool) -> Row:
+def _deviation(result, ref: dict, keys: tuple[str, ...]) -> float:
+    dev = 0.0
+    for name, want in ref.items():
+        for key, w in zip(keys, want, strict=False):
+            dev = max(dev, max_rel(result.points[name][key], w))
+    return dev
+
+
+def _peer_runs(case: Case, plan: SolvePlan, n: int, phi: np.ndarray):
+    """pylinkage's two runs (positions; with rates) and its deviation from ours."""
+    linkage, crank, names = case.peer(plan, n)
+    linkage.set_input_velocity(crank, plan.drivers[0].speed, plan.drivers[0].acceleration)
+    sketch = linkage.get_coords()
+    linkage.compile()
+
+    def pl_pos():
+        linkage.set_coords(sketch)
+        return linkage.step_fast(iterations=n)
+
+    def pl_pva():
+        linkage.set_coords(sketch)
+        return linkage.step_fast_with_kinematics(iterations=n)
+
+    pl_pos()  # numba compile (or cache load) outside the timing
+    pos, vel, acc = pl_pva()
+    # pylinkage reports the pose after each step: inputs (k + 1)·2π/n
+    later = sweep(plan, (phi + 2 * math.pi / n)[:, None])
+    dev = 0.0
+    for j, name in enumerate(names):
+        got = later.points[name]
+        for key, want in zip(
+            ("position", "velocity", "acceleration"), (pos, vel, acc), strict=True
+        ):
+            dev = max(dev, max_rel(got[key], want[:, j]))
+    return pl_pos, pl_pva, dev
+
+
+def measure(case: Case, plan: SolvePlan, n: int, rounds: int, use_peer: bool) -> Row:
     phi = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
     inputs = phi[:, None]
-    link, c = plan.points[case.point]
-    hand = case.hand(plan)
-
-    def ours():
-        motion = solve_poses(plan, inputs)
-        return motion, motion.point(link, c)
-
-    def hand_run():
-        return hand(phi)
-
-    # cross-check first (every named point, positions / velocities / accelerations)
-    motion, _ = ours()
-    ref = _as_arrays(hand_run(), n)
-    dev = 0.0
-    for name, (p_ref, v_ref, a_ref) in ref.items():
-        plink, pc = plan.points[name]
-        for got, want in zip(motion.point(plink, pc), (p_ref, v_ref, a_ref), strict=True):
-            dev = max(dev, max_rel(got, want))
-    row = Row(case.name, n, 0.0, 0.0, dev_hand=dev)
-
-    def ours_all():
-        motion = solve_poses(plan, inputs)
-        for table in (motion.q, motion.qd, motion.qdd):
-            for name in table:
-                table[name]
-        return [motion.point(*plan.points[name]) for name in ref]
-
-    # Rounds of repeated runs of each, best over all: at 10^5 poses the time
-    # depends on which pages the allocator hands out (fresh pages fault), and a
-    # solver run right after the other inherits the other's heap.
-    row.ours = row.hand = row.ours_all = math.inf
-    for _ in range(3):
-        row.ours = min(row.ours, best_of(ours, repeat) / n)
-        row.hand = min(row.hand, best_of(hand_run, repeat) / n)
-        row.ours_all = min(row.ours_all, best_of(ours_all, repeat) / n)
-
+    hand, hand_p = case.hand(plan), case.hand(plan, rates=False)
+    keys = ("position", "velocity", "acceleration")
+    # cross-check first: every named point, positions / velocities / accelerations
+    ref = _as_arrays(hand(phi), n)
+    dev = _deviation(sweep(plan, inputs), ref, keys)
+    if _supports_positions_only():
+        ref_p = {k: (v[0],) for k, v in ref.items()}
+        dev = max(dev, _deviation(sweep(plan, inputs, rates=False), ref_p, keys[:1]))
+    fns: dict[str, Callable[[], object]] = {
+        "ours": lambda: sweep_every_joint(plan, inputs, True),
+        "hand": lambda: hand(phi),
+        "ours_pos": lambda: sweep_every_joint(plan, inputs, False),
+        "hand_pos": lambda: hand_p(phi),
+    }
+    dev_pl = None
     if use_peer:
-        linkage, crank, names = case.peer(plan, n)
-        linkage.set_input_velocity(crank, plan.drivers[0].speed, plan.drivers[0].acceleration)
-        sketch = linkage.get_coords()
-        linkage.compile()
-
-        def pl_pos():
-            linkage.set_coords(sketch)
-            return linkage.step_fast(iterations=n)
-
-        def pl_pva():
-            linkage.set_coords(sketch)
-            return linkage.step_fast_with_kinematics(iterations=n)
-
-        pl_pos()  # numba compile (or cache load) outside the timing
-        pos, vel, acc = pl_pva()
-        # pylinkage reports the pose after each step: inputs (k + 1)·2π/n
-        m2 = solve_poses(plan, (phi + 2 * math.pi / n)[:, None])
-        dpl = 0.0
-        for j, name in enumerate(names):
-            plink, pc = plan.points[name]
-            for got, want in zip(
-                m2.point(plink, pc), (pos[:, j], vel[:, j], acc[:, j]), strict=True
-            ):
-                dpl = max(dpl, max_rel(got, want))
-        row.dev_pl = dpl
-        row.pl_pos = best_of(pl_pos, repeat) / n
-        row.pl_pva = best_of(pl_pva, repeat) / n
-    return row
+        pl_pos, pl_pva, dev_pl = _peer_runs(case, plan, n, phi)
+        fns["pl_pos"], fns["pl_pva"] = pl_pos, pl_pva
+    for fn in fns.values():  # warm up (allocator, caches)
+        fn()
+    t = {k: v / n for k, v in interleaved(fns, rounds).items()}
+    return Row(
+        case.name, n, t["ours"], t["hand"], t["ours_pos"], t["hand_pos"],
+        t.get("pl_pos"), t.get("pl_pva"), dev, dev_pl,
+    )  # fmt: skip
 
 
-def profile_ours(plan: SolvePlan, point: str, n: int, top: int = 15) -> str:
+def measure_triad(n: int, rounds: int) -> tuple[float, float, str]:
+    """Per-pose time of the eight-bar with a class III triad and of the four-bar, same run."""
+    plans = {"eightbar": _plan("eightbar_triad"), "fourbar": _plan("fourbar")}
     inputs = np.linspace(0.0, 2 * math.pi, n, endpoint=False)[:, None]
-    link, c = plan.points[point]
+    fns = {k: (lambda p=p: sweep_every_joint(p, inputs, True)) for k, p in plans.items()}
+    for fn in fns.values():
+        fn()
+    t = interleaved(fns, rounds)
+    labels = ", ".join(s.label for s in plans["eightbar"].steps)
+    return t["eightbar"] / n, t["fourbar"] / n, labels
+
+
+def profile_ours(plan: SolvePlan, n: int, top: int = 15) -> str:
+    inputs = np.linspace(0.0, 2 * math.pi, n, endpoint=False)[:, None]
     prof = cProfile.Profile()
     prof.enable()
-    motion = solve_poses(plan, inputs)
-    motion.point(link, c)
+    sweep_every_joint(plan, inputs, True)
     prof.disable()
     out = io.StringIO()
     pstats.Stats(prof, stream=out).sort_stats("tottime").print_stats(top)
@@ -395,24 +437,20 @@ def _us(t: float | None) -> str:
     return "—" if t is None else f"{t * 1e6:.3f}"
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--sizes", type=int, nargs="+", default=[1000, 10000, 100000])
-    parser.add_argument("--repeat", type=int, default=None, help="runs per timing (default 7/5/3)")
-    parser.add_argument("--triad-poses", type=int, default=10000, help="0 skips the eight-bar")
-    parser.add_argument("--profile", action="store_true", help="cProfile ours at the largest N")
-    parser.add_argument("--no-pylinkage", action="store_true", help="skip the peer")
-    args = parser.parse_args(argv)
+def _ratio(a: float | None, b: float | None, width: int) -> str:
+    return "—".rjust(width) if a is None or b is None else f"{a / b:>{width - 1}.2f}x"
 
-    use_peer = pl is not None and not args.no_pylinkage
+
+def _preamble(use_peer: bool, no_peer_flag: bool) -> None:
     print(
-        f"goals at N = 10^5: ours <= {GOAL_HAND:g}x the hand-written numpy solver; "
-        f"pylinkage (numba, pos+vel+acc) >= {GOAL_PEER:g}x ours"
+        f"goals at N = 10^5: sweep() <= {GOAL_HAND:g}x the hand-written numpy solver (pos+vel+acc, "
+        f"and positions only); pylinkage (numba, pos+vel+acc) >= {GOAL_PEER:g}x sweep(); "
+        f"eight-bar (class III triad) <= {GOAL_TRIAD:g}x the four-bar per pose"
     )
-    print(f"numpy {np.__version__}, python {sys.version.split()[0]}")
+    print(f"numpy {np.__version__}, python {sys.version.split()[0]}, load {_load()}")
     if pl is None:
         print("pylinkage is not installed: its columns are skipped (pip install pylinkage numba)")
-    elif args.no_pylinkage:
+    elif no_peer_flag:
         print("pylinkage skipped (--no-pylinkage)")
     else:
         try:
@@ -423,97 +461,125 @@ def main(argv: list[str] | None = None) -> int:
             fast = "NO numba: pylinkage falls back to pure Python"
         print(f"pylinkage {pl.__version__} ({fast})")
     print(
-        "ours = solve_poses + Motion.point (coupler point / foot); ours all = that, then every "
-        "link's q, qd, qdd (angles by arctan2) and every named point read out; hand = closed "
-        "form, every pin + that point; pl pos = step_fast; pl pva = step_fast_with_kinematics"
+        "ours = kinematics.sweep() then every named point's position, velocity and acceleration "
+        "read out; ours pos = sweep(rates=False), every position; hand = closed form, every pin "
+        "and point (hand pos: positions only); pl pos = step_fast; pl pva = "
+        "step_fast_with_kinematics. Times: medians of interleaved rounds, us per pose."
     )
     print()
+
+
+def _load() -> str:
+    try:
+        return " ".join(f"{x:.2f}" for x in os.getloadavg())
+    except OSError:  # pragma: no cover - platform
+        return "?"
+
+
+def _print_row(row: Row, header_width: int) -> None:
+    print(
+        f"{row.linkage:<9} {row.n:>7} {_us(row.ours):>8} {_us(row.hand):>8} "
+        f"{_us(row.ours_pos):>8} {_us(row.hand_pos):>8} {_us(row.pl_pos):>8} "
+        f"{_us(row.pl_pva):>8} {_ratio(row.ours, row.hand, 10)} "
+        f"{_ratio(row.ours_pos, row.hand_pos, 10)} {_ratio(row.pl_pva, row.ours, 10)} "
+        f"{row.dev_hand:>9.1e} "
+        + ("—".rjust(9) if row.dev_pl is None else f"{row.dev_pl:>9.1e}")
+        + ("  MISMATCH" if not row.dev_hand <= RTOL else ""),
+        flush=True,
+    )
+
+
+def _verdicts(rows: list[Row], triad: tuple[float, float, str] | None) -> list[str]:
+    out: list[str] = []
+    for r in (r for r in rows if r.n >= 99_999):
+        for what, ours, hand in (
+            ("pos+vel+acc", r.ours, r.hand),
+            ("positions", r.ours_pos, r.hand_pos),
+        ):
+            ratio = ours / hand
+            out.append(
+                f"{r.linkage}: sweep()/hand, {what}, N = {r.n}: {ratio:.2f}x (<= {GOAL_HAND:g}x) "
+                f"{'met' if ratio <= GOAL_HAND else 'FAILED'}"
+            )
+        if r.pl_pva is None:
+            out.append(f"{r.linkage}: pylinkage goal not checked (pylinkage not run)")
+        else:
+            ratio = r.pl_pva / r.ours
+            out.append(
+                f"{r.linkage}: pylinkage/sweep() (pos+vel+acc) at N = {r.n}: {ratio:.2f}x "
+                f"(>= {GOAL_PEER:g}x) {'met' if ratio >= GOAL_PEER else 'FAILED'}"
+            )
+    if not any(r.n >= 99_999 for r in rows):
+        out.append("hand and pylinkage goals not checked: run with N = 10^5")
+    if triad is not None:
+        ratio = triad[0] / triad[1]
+        out.append(
+            f"eight-bar/four-bar per pose: {ratio:.2f}x (<= {GOAL_TRIAD:g}x) "
+            f"{'met' if ratio <= GOAL_TRIAD else 'FAILED'}"
+        )
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--sizes", type=int, nargs="+", default=[1000, 10000, 100000])
+    parser.add_argument("--rounds", type=int, default=None, help="interleaved rounds (15/9/7)")
+    parser.add_argument("--triad-poses", type=int, default=10000, help="0 skips the eight-bar")
+    parser.add_argument("--profile", action="store_true", help="cProfile ours at the largest N")
+    parser.add_argument("--no-pylinkage", action="store_true", help="skip the peer")
+    args = parser.parse_args(argv)
+
+    use_peer = pl is not None and not args.no_pylinkage
+    _preamble(use_peer, args.no_pylinkage)
     header = (
-        f"{'linkage':<9} {'N':>7} {'ours us':>9} {'all us':>9} {'hand us':>9} {'pl pos us':>10} "
-        f"{'pl pva us':>10} {'ours/hand':>10} {'pl pva/ours':>12} {'pl pos/ours':>12} "
+        f"{'linkage':<9} {'N':>7} {'ours':>8} {'hand':>8} {'ours pos':>8} {'hand pos':>8} "
+        f"{'pl pos':>8} {'pl pva':>8} {'ours/hand':>10} {'pos/hand':>10} {'pl/ours':>10} "
         f"{'dev hand':>9} {'dev pl':>9}"
     )
-    print("time per pose (best of runs), deviations: max relative difference, pos/vel/acc")
     print(header)
     print("-" * len(header))
-
     rows: list[Row] = []
     mismatch = False
     plans = {case.name: _plan(case.fixture) for case in CASES}
     for case in CASES:
         for n in args.sizes:
-            repeat = args.repeat or (7 if n <= 1000 else 5 if n <= 10000 else 3)
+            rounds = args.rounds or (15 if n <= 1000 else 9 if n <= 10000 else 7)
             try:
-                row = measure(case, plans[case.name], n, repeat, use_peer)
+                row = measure(case, plans[case.name], n, rounds, use_peer)
             except Exception as exc:  # a solve that fails is a finding, not a crash
                 print(f"{case.name:<9} {n:>7}  FAILED: {type(exc).__name__}: {exc}")
                 mismatch = True
                 continue
             rows.append(row)
-            bad = not row.dev_hand <= RTOL
-            mismatch |= bad
-            peer_ratio = None if row.pl_pva is None else row.pl_pva / row.ours
-            pos_ratio = None if row.pl_pos is None else row.pl_pos / row.ours
-            print(
-                f"{row.linkage:<9} {n:>7} {_us(row.ours):>9} {_us(row.ours_all):>9} "
-                f"{_us(row.hand):>9} "
-                f"{_us(row.pl_pos):>10} {_us(row.pl_pva):>10} {row.ours / row.hand:>9.2f}x "
-                + ("{:>12}".format("—") if peer_ratio is None else f"{peer_ratio:>11.3f}x")
-                + " "
-                + ("{:>12}".format("—") if pos_ratio is None else f"{pos_ratio:>11.3f}x")
-                + f" {row.dev_hand:>9.1e} "
-                + ("{:>9}".format("—") if row.dev_pl is None else f"{row.dev_pl:>9.1e}")
-                + ("  MISMATCH" if bad else ""),
-                flush=True,
-            )
+            mismatch |= not row.dev_hand <= RTOL
+            _print_row(row, len(header))
 
+    triad = None
     if args.triad_poses:
-        plan = _plan("eightbar_triad")
         n = args.triad_poses
-        inputs = np.linspace(0.0, 2 * math.pi, n, endpoint=False)[:, None]
-        t = time.perf_counter()
         try:
-            solve_poses(plan, inputs)
-            dt = time.perf_counter() - t
-            labels = ", ".join(s.label for s in plan.steps)
+            triad = measure_triad(n, args.rounds or 5)
             print(
-                f"\neight-bar with a class III triad ({labels}), {n} poses: "
-                f"{dt:.2f} s, {dt / n * 1e6:.1f} us per pose (one run)"
+                f"\neight-bar with a class III triad ({triad[2]}), {n} poses: "
+                f"{triad[0] * 1e6:.2f} us per pose; four-bar in the same run "
+                f"{triad[1] * 1e6:.3f} us per pose (sweep(), every joint, medians)"
             )
         except Exception as exc:
             print(f"\neight-bar with a class III triad, {n} poses: FAILED: {exc}")
             mismatch = True
 
+    if args.profile and rows:
+        for case in CASES:
+            print(f"\ncProfile of ours, {case.name}, N = {max(args.sizes)} (by own time):")
+            print(profile_ours(plans[case.name], max(args.sizes)))
+
     print()
-    verdicts: list[str] = []
-    big = [r for r in rows if r.n >= 99_999]
-    for r in big:
-        ratio = r.ours / r.hand
-        verdicts.append(
-            f"{r.linkage}: ours/hand at N = {r.n}: {ratio:.2f}x (<= {GOAL_HAND:g}x) "
-            f"{'met' if ratio <= GOAL_HAND else 'FAILED'}"
-        )
-        if r.pl_pva is None:
-            verdicts.append(f"{r.linkage}: pylinkage goal not checked (pylinkage not run)")
-        else:
-            ratio = r.pl_pva / r.ours
-            verdicts.append(
-                f"{r.linkage}: pylinkage/ours (pos+vel+acc) at N = {r.n}: {ratio:.3f}x "
-                f"(>= {GOAL_PEER:g}x) {'met' if ratio >= GOAL_PEER else 'FAILED'}"
-            )
-    if not big:
-        verdicts.append("goals not checked: run with N = 10^5")
-    for v in verdicts:
-        print(v)
     agree = "agree" if not mismatch else "DISAGREE (or a solve failed)"
     print(f"cross-check ours vs hand (pos, vel, acc to {RTOL:g} relative): {agree}")
-
-    if args.profile and rows:
-        n = max(args.sizes)
-        for case in CASES:
-            print(f"\ncProfile of ours, {case.name}, N = {n} (sorted by own time):")
-            print(profile_ours(plans[case.name], case.point, n))
-
+    print(f"load average after the run: {_load()}")
+    verdicts = _verdicts(rows, triad)
+    for v in verdicts:
+        print(v)
     if mismatch:
         return 1
     return 2 if any("FAILED" in v for v in verdicts) else 0

@@ -48,7 +48,24 @@ from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
 
-__all__ = ["frame_dyad", "place_dyad"]
+__all__ = ["NOT_CLOSED", "PinCache", "frame_dyad", "place_dyad"]
+
+
+class PinCache(dict):
+    """``(link, x, y) -> (x, y, vx, vy, ax, ay)``: the pins a solve has found, each once.
+
+    ``joints`` holds the keys of the dyads' joints, which the closed forms find
+    themselves; every other entry is its link's frame's :meth:`Frame.point`
+    (or :meth:`Frame.position`, the rates None), as any point of that link is.
+    """
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.joints: set = set()
+
+    def on_frames(self) -> dict:
+        """The entries that come from a link's frame (not the dyads' joints)."""
+        return {k: v for k, v in self.items() if k not in self.joints}
 
 
 # ---------------------------------------------------------------- shared pieces
@@ -66,7 +83,10 @@ def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
     q, qd, qdd = tables
     if link not in q:
         return GROUND_FRAME
-    frame = frames[link] = frame_of_columns(q[link], qd[link], qdd[link])
+    if link in qd:
+        frame = frames[link] = frame_of_columns(q[link], qd[link], qdd[link])
+    else:  # solved for positions only
+        frame = frames[link] = frame_of_columns(q[link], None, None)
     return frame
 
 
@@ -93,22 +113,80 @@ def _tolerance(plan: SolvePlan) -> float:
     return 1e-12 * plan.length**2
 
 
-def _not_assembled(step: GroupStep, inputs: np.ndarray, bad: np.ndarray) -> AssemblyError:
+#: why a dyad does not close, as the errors say it
+NOT_CLOSED = "the dyad cannot close (its links are too short for the distance to span)"
+
+
+def _not_assembled(
+    step: GroupStep, plan: SolvePlan, inputs: np.ndarray, bad: np.ndarray
+) -> AssemblyError:
+    """The error at the first pose of ``bad``; it keeps the rows of all of them (``indices``)."""
     k = int(np.argmax(bad))
-    return AssemblyError.at(
-        step.label,
-        inputs[k],
-        "the dyad cannot close (its links are too short for the distance to span)",
-    )
+    error = AssemblyError.at(step.label, inputs[k], NOT_CLOSED, plan.driver_kinds)
+    error.indices = np.flatnonzero(bad)
+    return error
 
 
-def _dead_centre(step: GroupStep, inputs: np.ndarray, sine: np.ndarray) -> None:
+def _dead_centre(step: GroupStep, plan: SolvePlan, inputs: np.ndarray, sine: np.ndarray) -> None:
     bad = np.abs(sine) <= DEAD_CENTRE
     if bad.any():
         k = int(np.argmax(bad))
-        raise SingularPoseError.at(
-            step.label, inputs[k], f"sine of the transmission angle {sine[k]:.2g}"
+        error = SingularPoseError.at(
+            step.label,
+            inputs[k],
+            f"sine of the transmission angle {sine[k]:.2g}",
+            plan.driver_kinds,
         )
+        error.indices = np.flatnonzero(bad)
+        raise error
+
+
+def _watch_dips(solve: _FrameSolve, h2) -> None:
+    """Note the steps where ``h2``, sampled at the poses, may dip to zero between them.
+
+    ``h2`` is the square of what keeps a dyad's two assembly modes apart (the
+    distance of its joint from the line of its roots; for an RRR dyad with
+    equal links also the distance between its outer pins). It is smooth along
+    the inputs while both modes exist, and touches zero where they meet (a
+    change point) or dips below where the dyad cannot close. At each local
+    minimum of the samples, a parabola through it and its neighbours gives the
+    low point between them; when that is no higher than the rise over one
+    step, the two steps beside it are appended to ``solve.watch`` for the
+    solve to look into with finer steps (:mod:`kinematics.branches`).
+    """
+    if solve.watch is None or not isinstance(h2, np.ndarray) or len(h2) < 3:
+        return
+    mid = h2[1:-1]
+    low = np.flatnonzero((mid <= h2[:-2]) & (mid <= h2[2:])) + 1
+    ends = [k for k, j in ((0, 1), (len(h2) - 1, len(h2) - 2)) if h2[k] < h2[j]]
+    if not len(low) and not ends:
+        return
+    k = np.concatenate([low, np.array(ends, dtype=int)])
+    c = np.clip(k, 1, len(h2) - 2)  # the middle of the three samples
+    inputs = solve.inputs / solve.plan.driver_scale
+    before = np.linalg.norm(inputs[c] - inputs[c - 1], axis=1)
+    after = np.linalg.norm(inputs[c + 1] - inputs[c], axis=1)
+    near = _parabola_low(before, after, h2[c - 1], h2[c], h2[c + 1])
+    if near.any():
+        steps = np.concatenate([k[near] - 1, k[near]])
+        steps = steps[(steps >= 0) & (steps < len(h2) - 1)]
+        solve.watch.append((solve.step.label, np.unique(steps)))
+
+
+def _parabola_low(p, q, y0, y1, y2) -> np.ndarray:
+    """Whether the parabola through (−p, y0), (0, y1), (q, y2) comes as low as the rise beside y1.
+
+    The rise is how far the higher neighbour stands above ``y1``: a minimum
+    that is well above it is a real one, which finer steps leave in place.
+    Arrays of as many triples as there are local minima.
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        span = p * q * (p + q)
+        a = (q * (y0 - y1) + p * (y2 - y1)) / span
+        b = (p * p * (y2 - y1) - q * q * (y0 - y1)) / span
+        vertex = np.minimum(y1 - b * b / (4.0 * a), y1)
+    low = np.where(a > 0.0, vertex, np.minimum(np.minimum(y0, y1), y2))
+    return (low <= np.maximum(y0, y2) - y1) | (span <= 0.0)
 
 
 def _arrays(n: int, *values):
@@ -116,12 +194,26 @@ def _arrays(n: int, *values):
     return tuple(v if isinstance(v, np.ndarray) else np.full(n, float(v)) for v in values)
 
 
-def _pin(frames: dict[str, Frame], tables: tuple, pins: dict, link: str, point: np.ndarray):
-    """``(x, y, vx, vy, ax, ay)`` of a pin on a known link, each computed once per solve."""
+def _pin(
+    frames: dict[str, Frame],
+    tables: tuple,
+    pins: dict,
+    link: str,
+    point: np.ndarray,
+    rates: bool = True,
+):
+    """``(x, y, vx, vy, ax, ay)`` of a pin on a known link, each computed once per solve.
+
+    Without ``rates``, the rates are None.
+    """
     key = (link, float(point[0]), float(point[1]))
     found = pins.get(key)
     if found is None:
-        found = pins[key] = _known_frame(frames, tables, link).point(point)
+        frame = _known_frame(frames, tables, link)
+        if rates:
+            found = pins[key] = frame.point(point)
+        else:
+            found = pins[key] = (*frame.position(point), None, None, None, None)
     return found
 
 
@@ -138,9 +230,11 @@ class _FrameSolve:
     tables: tuple
     pins: dict
     inputs: np.ndarray
+    rates: bool = True
+    watch: list | None = None
 
     def pin(self, link: str, point: np.ndarray) -> tuple:
-        return _pin(self.frames, self.tables, self.pins, link, point)
+        return _pin(self.frames, self.tables, self.pins, link, point, self.rates)
 
 
 def frame_dyad(
@@ -150,20 +244,25 @@ def frame_dyad(
     tables: tuple,
     pins: dict,
     inputs: np.ndarray,
+    rates: bool = True,
+    watch: list | None = None,
 ) -> bool:
     """Solve an RRR or RRP dyad for every pose in closed form, positions and rates at once.
 
     False when the group is not such a dyad (or its sketch does not fix the
     assembly mode); the general path solves it then. Each link's motion is
     added to ``frames`` and declared in the ``(q, qd, qdd)`` ``tables``;
-    ``pins`` caches the motion of the pins on known links.
+    ``pins`` caches the motion of the pins on known links. With ``rates``
+    false only the positions are found (the frames' rates are None). The
+    steps between poses where the dyad may have changed its assembly mode are
+    appended to ``watch`` as ``(label, step indices)`` (see :func:`_watch_dips`).
 
     Raises
     ------
     AssemblyError
-        The dyad does not close at some input.
+        The dyad does not close at some input (``indices``: every such row).
     SingularPoseError
-        The dyad is at a dead centre at some input.
+        The dyad is at a dead centre at some input, or its outer pins coincide.
     """
     g = step.group
     if g is None or g.kind not in ("RRR", "RRP") or len(step.links) != 2:
@@ -175,7 +274,7 @@ def frame_dyad(
     c = _sketch_point(plan, mid.point)
     if c is None:
         return False
-    solve = _FrameSolve(step, plan, frames, tables, pins, inputs)
+    solve = _FrameSolve(step, plan, frames, tables, pins, inputs, rates, watch)
     placed = _frame_rrr(solve, ext, c) if g.kind == "RRR" else _frame_rrp(solve, ext, c)
     if not placed:
         return False
@@ -199,31 +298,61 @@ def _frame_rrr(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) 
     pins_b = bx, by, bvx, bvy, bax, bay = solve.pin(e1.links[1], b)
     pins_d = dx, dy, dvx, dvy, dax, day = solve.pin(e2.links[1], d)
     s1, s2 = c - b, c - d
-    joint = (c, *_circle_circle(step, solve.inputs, pins_b, pins_d, float(s1 @ s1),
-                                float(s2 @ s2), side, _tolerance(plan)))  # fmt: skip
-    solve.pins[(l1, *c)] = solve.pins[(l2, *c)] = joint[1:]
+    len1, len2 = float(s1 @ s1), float(s2 @ s2)
+    _check_coincident(solve, pins_b, pins_d, len1, len2, (e1.point, e2.point))
+    joint = (c, *_circle_circle(solve, pins_b, pins_d, len1, len2, side))
+    _joint(solve, (l1, *c), (l2, *c), joint[1:])
     solve.frames[l1] = Frame(b, bx, by, bvx, bvy, bax, bay, second=joint)
     solve.frames[l2] = Frame(d, dx, dy, dvx, dvy, dax, day, second=joint)
     return True
 
 
+def _joint(solve: _FrameSolve, key1: tuple, key2: tuple, values: tuple) -> None:
+    """Keep a dyad's joint in the solve's pins, under both of its links."""
+    solve.pins[key1] = solve.pins[key2] = values
+    if isinstance(solve.pins, PinCache):
+        solve.pins.joints.update((key1, key2))
+
+
+def _check_coincident(
+    solve: _FrameSolve, pin_b: tuple, pin_d: tuple, len1: float, len2: float, names: tuple
+) -> None:
+    """Refuse the poses where an RRR dyad's outer pins coincide and its links are equal.
+
+    C may then be anywhere on a circle (a deltoid folded onto itself): a
+    singular pose, not links too short.
+    """
+    tol = _tolerance(solve.plan)
+    if abs(len1 - len2) > tol * 1e3:  # unequal links: coinciding pins cannot close
+        return
+    ex, ey = pin_d[0] - pin_b[0], pin_d[1] - pin_b[1]
+    gap = ex * ex + ey * ey
+    _watch_dips(solve, gap)
+    near = np.atleast_1d(gap <= tol)
+    if near.any():
+        k = int(np.argmax(near)) if near.shape[0] > 1 else 0
+        error = SingularPoseError.singular(
+            solve.step.label,
+            solve.inputs[k],
+            f"its outer pins {names[0]} and {names[1]} coincide and its links are equal, so "
+            "the pin between them may be anywhere on a circle (its position is indeterminate)",
+            solve.plan.driver_kinds,
+        )
+        error.indices = np.flatnonzero(near)
+        raise error
+
+
 def _circle_circle(
-    step: GroupStep,
-    inputs: np.ndarray,
-    pin_b: tuple,
-    pin_d: tuple,
-    len1: float,
-    len2: float,
-    side: float,
-    tol: float,
+    solve: _FrameSolve, pin_b: tuple, pin_d: tuple, len1: float, len2: float, side: float
 ) -> tuple:
     """``(x, y, vx, vy, ax, ay)`` of an RRR dyad's joint C from its pins B and D.
 
     C is at distance √len1 from B and √len2 from D, on the ``side`` of BD;
-    its rates follow by :func:`_rrr_rates`. Written with in-place operations:
-    at 10^5 poses, fresh temporaries cost more (in page faults) than the
-    arithmetic.
+    its rates follow by :func:`_rrr_rates` (None for positions only).
+    Written with in-place operations: at 10^5 poses, fresh temporaries cost
+    more (in page faults) than the arithmetic.
     """
+    step, inputs, tol = solve.step, solve.inputs, _tolerance(solve.plan)
     bx, by = pin_b[:2]
     dx, dy = pin_d[:2]
     n = inputs.shape[0]
@@ -239,10 +368,13 @@ def _circle_circle(
     along *= 0.5
     h = np.multiply(along, along, out=t)
     np.subtract(len1, h, out=h)
-    if (bad := h < -tol).any():
-        raise _not_assembled(step, inputs, bad)
+    if h.min() < -tol:
+        raise _not_assembled(step, solve.plan, inputs, h < -tol)
     np.maximum(h, 0.0, out=h)
+    _watch_dips(solve, h)
     np.sqrt(h, out=h)
+    if not solve.rates:  # |C − B|·|C − D|·sine = |BD|·h: the dead centres from h alone
+        _dead_height(solve, h, inv, len1, len2)
     h *= side
     h *= inv
     along *= inv
@@ -253,12 +385,26 @@ def _circle_circle(
     r1x -= ey
     r1y += ex
     cx, cy = bx + r1x, by + r1y
+    if not solve.rates:
+        return cx, cy, None, None, None, None
     r2x, r2y = cx - dx, cy - dy  # C − D
     det = r1x * r2y
     t = np.multiply(r1y, r2x, out=ex)
     det -= t
-    _dead_centre(step, inputs, det * (1.0 / math.sqrt(len1 * len2)))
+    if np.abs(det).min() * (1.0 / math.sqrt(len1 * len2)) <= DEAD_CENTRE:
+        _dead_centre(step, solve.plan, inputs, det * (1.0 / math.sqrt(len1 * len2)))
     return (cx, cy, *_rrr_rates(pin_b, pin_d, r1x, r1y, r2x, r2y, det, t))
+
+
+def _dead_height(solve: _FrameSolve, h: np.ndarray, inv, len1: float, len2: float) -> None:
+    """The dead-centre check of an RRR dyad from C's height ``h`` over BD (``inv`` = 1/|BD|).
+
+    The sine of the transmission angle is |BD|·h/(|BC|·|CD|).
+    """
+    scale = 1.0 / math.sqrt(len1 * len2)
+    sine = h / inv
+    if sine.min() * scale <= DEAD_CENTRE:
+        _dead_centre(solve.step, solve.plan, solve.inputs, sine * scale)
 
 
 def _rrr_rates(
@@ -331,14 +477,19 @@ def _frame_rrp(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) 
     len1 = float(s1 @ s1)
     guide = _known_frame(solve.frames, solve.tables, ext[slider].links[1])
     pin_b = bx, by, bvx, bvy, bax, bay = solve.pin(ext[rod].links[1], b)
-    origin = guide.point(c)  # the guide's point at C in the sketch
+    # the guide's point at C in the sketch
+    origin = guide.point(c) if solve.rates else (*guide.position(c), None, None, None, None)
     ux = guide.cos * u0[0] - guide.sin * u0[1]  # the slide's direction at every pose
     uy = guide.sin * u0[0] + guide.cos * u0[1]
     s, r1x, r1y = _circle_line(solve, pin_b, origin, (ux, uy), len1, sigma)
     cx, cy = bx + r1x, by + r1y
-    rates = _rrp_rates(solve, pin_b, guide, origin, (ux, uy), s, (r1x, r1y), len1)
+    if solve.rates:
+        rates = _rrp_rates(solve, pin_b, guide, origin, (ux, uy), s, (r1x, r1y), len1)
+    else:
+        _dead_centre(solve.step, plan, solve.inputs, (r1x * ux + r1y * uy) / math.sqrt(len1))
+        rates = (None, None, None, None)
     joint = (c, cx, cy, *rates)
-    solve.pins[(rod, *c)] = solve.pins[(slider, *c)] = joint[1:]
+    _joint(solve, (rod, *c), (slider, *c), joint[1:])
     solve.frames[rod] = Frame(b, bx, by, bvx, bvy, bax, bay, second=joint)
     solve.frames[slider] = Frame(c, *joint[1:], turns_with=guide)
     return True
@@ -366,8 +517,10 @@ def _circle_line(
     uw = ux * wx + uy * wy
     disc = uw * uw - (wx * wx + wy * wy) + len1
     if (bad := disc < -_tolerance(solve.plan)).any():
-        raise _not_assembled(solve.step, solve.inputs, bad)
-    s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
+        raise _not_assembled(solve.step, solve.plan, solve.inputs, bad)
+    root = np.maximum(disc, 0.0)
+    _watch_dips(solve, root)
+    s = -uw + sigma * np.sqrt(root)
     return s, wx + s * ux, wy + s * uy
 
 
@@ -398,7 +551,7 @@ def _rrp_rates(
     kax = oax - eg * s * uy - wgs * s * ux
     kay = oay + eg * s * ux - wgs * s * uy
     det = r1x * ux + r1y * uy
-    _dead_centre(solve.step, solve.inputs, det / math.sqrt(len1))
+    _dead_centre(solve.step, solve.plan, solve.inputs, det / math.sqrt(len1))
     inv = 1.0 / det
     gx, gy = kvx - bvx, kvy - bvy
     w1 = (ux * gy - uy * gx) * inv
@@ -511,7 +664,7 @@ def _place_rpr(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, dy
     uw = float(u0 @ w)
     disc = uw**2 - float(w @ w) + np.einsum("ij,ij->i", e, e)
     if (bad := disc < -_tolerance(plan)).any():
-        raise _not_assembled(step, inputs, bad)
+        raise _not_assembled(step, plan, inputs, bad)
     s = -uw + sigma * np.sqrt(np.maximum(disc, 0.0))
     span = w[None, :] + s[:, None] * u0[None, :]
     theta = np.arctan2(e[:, 1], e[:, 0]) - np.arctan2(span[:, 1], span[:, 0])
@@ -519,6 +672,23 @@ def _place_rpr(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, dy
     q[dyad.first] = np.column_stack([bw - rotate_many(theta, b), theta])
     q[dyad.second] = np.column_stack([dw - rotate_many(theta, d), theta])
     return True
+
+
+def _parallel_slides(step: GroupStep, plan: SolvePlan, inputs: np.ndarray, det: np.ndarray) -> None:
+    """Refuse the poses where a dyad's two slides are parallel (``det``: the sine between them).
+
+    The slides then meet nowhere, or everywhere along them: a singular pose.
+    """
+    if (bad := np.abs(det) < 1e-12).any():
+        k = int(np.argmax(bad))
+        error = SingularPoseError.singular(
+            step.label,
+            inputs[k],
+            "its two slides are parallel, so they meet nowhere (or anywhere along them)",
+            plan.driver_kinds,
+        )
+        error.indices = np.flatnonzero(bad)
+        raise error
 
 
 def _place_prp(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, dyad: _Dyad) -> bool:
@@ -533,8 +703,7 @@ def _place_prp(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, dy
     big_u1, big_u2 = rotate_many(t1, u1), rotate_many(t2, u2)
     gap = _world(q, k2, c, n) - _world(q, k1, c, n)
     s1, s2, det = _solve2(big_u1, -big_u2, gap)
-    if (bad := np.abs(det) < 1e-12).any():
-        raise _not_assembled(step, inputs, bad)
+    _parallel_slides(step, plan, inputs, det)
     x1 = (q[k1][:, :2] if k1 in q else 0.0) + s1[:, None] * big_u1
     x2 = (q[k2][:, :2] if k2 in q else 0.0) + s2[:, None] * big_u2
     q[dyad.first] = np.column_stack([np.broadcast_to(x1, (n, 2)), t1])
@@ -556,8 +725,7 @@ def _place_rpp(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, dy
     big_um, big_u2 = rotate_many(theta, um), rotate_many(theta, u2)
     xk2 = q[k2][:, :2] if k2 in q else np.zeros((n, 2))
     sm, _, det = _solve2(big_um, -big_u2, xk2 - x1)
-    if (bad := np.abs(det) < 1e-12).any():
-        raise _not_assembled(step, inputs, bad)
+    _parallel_slides(step, plan, inputs, det)
     q[dyad.first] = np.column_stack([x1, theta])
     q[dyad.second] = np.column_stack([x1 + sm[:, None] * big_um, theta])
     return True

@@ -67,6 +67,8 @@ class Frame:
       slider on its guide).
 
     They are then computed when first read, so a solve pays only for what is used.
+    A frame solved for positions only has ``None`` for the point's rates (and
+    the second point's); only its positions can be read then.
     """
 
     __slots__ = ("_cos", "_epsilon", "_omega", "_second", "_sin", "_turns_with", "ax", "ay",
@@ -99,17 +101,30 @@ class Frame:
         return f"Frame(ref={self.ref.tolist()})"
 
     def _turn(self) -> None:
+        """The rotation's cosine and sine, from the frame turned with or the second point."""
         like = self._turns_with
         if like is not None:
-            self._cos, self._sin = like.cos, like.sin
-            self._omega, self._epsilon, self.theta = like.omega, like.epsilon, like.theta
+            self._cos, self._sin, self.theta = like.cos, like.sin, like.theta
             return
-        xy, x, y, vx, vy, ax, ay = self._second
+        xy, x, y = self._second[:3]
         sx, sy = float(xy[0] - self.ref[0]), float(xy[1] - self.ref[1])
         k = 1.0 / (sx * sx + sy * sy)
         rx, ry = x - self.x, y - self.y
         self._cos = (sx * k) * rx + (sy * k) * ry
         self._sin = (sx * k) * ry - (sy * k) * rx
+
+    def _turn_rates(self) -> None:
+        """ω and ε, from the frame turned with or the second point (``(r × Δv)/|r|²``)."""
+        like = self._turns_with
+        if like is not None:
+            self._omega, self._epsilon = like.omega, like.epsilon
+            return
+        if self.vx is None:
+            raise ValueError("a frame solved for positions only has no rates")
+        xy, x, y, vx, vy, ax, ay = self._second
+        sx, sy = float(xy[0] - self.ref[0]), float(xy[1] - self.ref[1])
+        k = 1.0 / (sx * sx + sy * sy)
+        rx, ry = x - self.x, y - self.y
         self._omega = (rx * (vy - self.vy) - ry * (vx - self.vx)) * k
         self._epsilon = (rx * (ay - self.ay) - ry * (ax - self.ax)) * k
 
@@ -128,13 +143,13 @@ class Frame:
     @property
     def omega(self) -> Values:
         if self._omega is None:
-            self._turn()
+            self._turn_rates()
         return self._omega
 
     @property
     def epsilon(self) -> Values:
         if self._epsilon is None:
-            self._turn()
+            self._turn_rates()
         return self._epsilon
 
     def offset(self, point: np.ndarray) -> tuple[Values, Values]:
@@ -161,6 +176,34 @@ class Frame:
         if not (isinstance(e, float) and e == 0.0):  # a crank turning at a constant rate
             ax, ay = ax - e * ry, ay + e * rx
         return self.x + rx, self.y + ry, self.vx - w * ry, self.vy + w * rx, ax, ay
+
+    def point_into(self, point: np.ndarray, out: tuple) -> None:
+        """:meth:`point` (or with two arrays in ``out``, :meth:`position`) written into ``out``.
+
+        The same arithmetic, so the same values to the last bit; the results
+        land in the caller's arrays instead of fresh ones.
+        """
+        dx, dy = float(point[0] - self.ref[0]), float(point[1] - self.ref[1])
+        if dx == 0.0 and dy == 0.0:
+            for target, value in zip(out, (self.x, self.y, self.vx, self.vy, self.ax, self.ay),
+                                     strict=False):  # fmt: skip
+                target[...] = value
+            return
+        c, s = self.cos, self.sin
+        rx, ry = c * dx - s * dy, s * dx + c * dy
+        np.add(self.x, rx, out=out[0])
+        np.add(self.y, ry, out=out[1])
+        if len(out) == 2:
+            return
+        w, e = self.omega, self.epsilon
+        np.subtract(self.vx, np.multiply(w, ry), out=out[2])
+        np.add(self.vy, np.multiply(w, rx), out=out[3])
+        w2 = w * w
+        np.subtract(self.ax, np.multiply(w2, rx), out=out[4])
+        np.subtract(self.ay, np.multiply(w2, ry), out=out[5])
+        if not (isinstance(e, float) and e == 0.0):  # a crank turning at a constant rate
+            np.subtract(out[4], np.multiply(e, ry), out=out[4])
+            np.add(out[5], np.multiply(e, rx), out=out[5])
 
     def angle(self) -> Values:
         """The rotation from the sketch, continuous along the poses."""
@@ -195,9 +238,17 @@ class Frame:
 GROUND_FRAME = Frame(np.zeros(2), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
 
 
-def frame_of_columns(q: np.ndarray, qd: np.ndarray, qdd: np.ndarray) -> Frame:
-    """The frame of a link given as ``(N, 3)`` poses and rates (reference: the frame origin)."""
+def frame_of_columns(q: np.ndarray, qd: np.ndarray | None, qdd: np.ndarray | None) -> Frame:
+    """The frame of a link given as ``(N, 3)`` poses and rates (reference: the frame origin).
+
+    ``qd`` and ``qdd`` None: a frame of positions only.
+    """
     theta = q[:, 2]
+    if qd is None or qdd is None:
+        return Frame(
+            np.zeros(2), q[:, 0], q[:, 1], None, None, None, None,
+            np.cos(theta), np.sin(theta), None, None, theta,
+        )  # fmt: skip
     return Frame(
         np.zeros(2),
         q[:, 0],

@@ -30,14 +30,23 @@ from .equations import group_system
 from .errors import AssemblyError
 from .plan import GroupStep, SolvePlan
 
-__all__ = ["densified", "follow", "needs_continuation", "newton_pose", "scaled_jacobian"]
+__all__ = [
+    "CONTINUATION_STEP",
+    "densified",
+    "follow",
+    "needs_continuation",
+    "newton_pose",
+    "scaled_jacobian",
+]
 
 _MAX_NEWTON = 60
 _CHUNK_SPAN = 0.3  # input span (rad, or fraction of the sketch) of one batched Newton chunk
 _CHUNK_MAX = 1024
 _CHUNK_ITERATIONS = 12
 _MODE_JUMP = 0.2  # rad: a chunk whose angles land this far from the prediction changed mode
-_CONTINUATION_STEP = 0.05  # rad for a turning driver, fraction of the sketch for a sliding one
+#: rad for a turning driver, fraction of the sketch for a sliding one: the largest step
+#: between poses that needs no intermediate poses
+CONTINUATION_STEP = 0.05
 
 
 def scaled_jacobian(jac: np.ndarray, length: float) -> np.ndarray:
@@ -70,6 +79,7 @@ def newton_pose(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -
             step.label,
             inputs,
             f"its pairs do not close (residual {norm:.3g} m after {_MAX_NEWTON} Newton steps)",
+            plan.driver_kinds,
         )
 
 
@@ -205,7 +215,7 @@ def densified(plan: SolvePlan, inputs: np.ndarray) -> tuple[np.ndarray, np.ndarr
     scale = _driver_scale(plan)
     previous = np.vstack([np.zeros((1, inputs.shape[1])), inputs[:-1]])
     jump = np.max(np.abs(inputs - previous) / scale, axis=1) if len(scale) else np.zeros(0)
-    pieces = np.maximum(1, np.ceil(jump / _CONTINUATION_STEP)).astype(int)
+    pieces = np.maximum(1, np.ceil(jump / CONTINUATION_STEP)).astype(int)
     picks = np.cumsum(pieces) - 1
     # row i's pieces: previous_i + (input_i − previous_i)·k/pieces_i, k = 1 … pieces_i
     owner = np.repeat(np.arange(len(inputs)), pieces)

@@ -35,10 +35,10 @@ __all__ = ["DriverStep", "GroupStep", "SolvePlan", "make_plan"]
 
 @dataclass(frozen=True)
 class DriverStep:
-    """A driver: ``kind`` 'R' (turns about ``pivot``) or 'P' (slides along ``direction``)."""
+    """A driver: ``kind`` R (turns about ``pivot``) or P (slides along ``direction``)."""
 
     link: str
-    kind: str
+    kind: PairKind
     pivot: np.ndarray
     direction: np.ndarray
     speed: float  # ω (rad/s) or v (m/s)
@@ -99,6 +99,16 @@ class SolvePlan:
     higher_pairs: tuple[str, ...] = ()
     contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
     rolling: tuple[GroupStep, ...] | None = None
+
+    @property
+    def driver_kinds(self) -> tuple[str, ...]:
+        """Each driver's kind, 'R' (turns) or 'P' (slides): how its inputs are printed."""
+        return tuple(d.kind for d in self.drivers)
+
+    @property
+    def driver_scale(self) -> np.ndarray:
+        """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size."""
+        return np.array([1.0 if d.kind == "R" else self.length for d in self.drivers])
 
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
@@ -163,7 +173,7 @@ def _driver_step(
         pivot = _xy(m, point, f"driver {link}'s pivot", problems)
         speed, acc = values.get("omega"), values.get("epsilon", 0.0)
         return DriverStep(
-            link, "R", pivot, np.zeros(2), speed or 0.0, acc, speed is not None, point
+            link, PairKind.R, pivot, np.zeros(2), speed or 0.0, acc, speed is not None, point
         )
     p_pair = joint.pair
     if p_pair.angle_deg is None:
@@ -171,7 +181,7 @@ def _driver_step(
     direction = unit_from_degrees(p_pair.angle_deg)  # v > 0 moves the driver along angle=
     speed, acc = values.get("v"), values.get("a", 0.0)
     return DriverStep(
-        link, "P", np.zeros(2), direction, speed or 0.0, acc, speed is not None, p_pair.point
+        link, PairKind.P, np.zeros(2), direction, speed or 0.0, acc, speed is not None, p_pair.point
     )
 
 

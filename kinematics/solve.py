@@ -37,11 +37,11 @@ import numpy as np
 
 from structure.errors import MechanismError
 
-from . import dyads
+from . import branches, dyads
 from .equations import group_system
 from .errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import Frame, LinkTable
-from .newton import densified, follow, needs_continuation, scaled_jacobian
+from .newton import CONTINUATION_STEP, densified, follow, needs_continuation, scaled_jacobian
 from .plan import GroupStep, SolvePlan
 from .state import KinematicState, LinkState, Motion, PointState
 
@@ -86,6 +86,8 @@ def solve_poses(
     plan: SolvePlan,
     inputs: np.ndarray,
     guess: Mapping[str, np.ndarray] | None = None,
+    *,
+    rates: bool = True,
 ) -> Motion:
     """Positions, velocities and accelerations for every row of ``inputs`` (N, drivers).
 
@@ -94,13 +96,23 @@ def solve_poses(
     intermediate poses where consecutive rows are far apart, so that they keep
     the sketch's assembly mode. ``guess`` holds link poses (3,) to start Newton
     from at the first row instead (no intermediate poses are added then).
+    With ``rates`` false only the positions are solved: the motion's ``qd`` and
+    ``qdd`` are empty then.
+
+    Consecutive rows are a path: a dyad whose joint jumps between two rows as
+    far as its other assembly mode lies is followed with finer steps
+    (:mod:`kinematics.branches`), so that it never changes mode unnoticed.
 
     Raises
     ------
     AssemblyError
-        A group does not close at some input (the first one is named).
+        A group does not close at some input (a closed-form dyad names the
+        whole stretch of rows where it does not, and the dead points at its ends).
+    BranchChangeError
+        A dyad would change its assembly mode between two rows (at a change
+        point, named).
     SingularPoseError
-        A group is at a dead centre at some input.
+        A group is at a dead centre (or another singular pose) at some input.
     MechanismError
         Inputs away from the sketch for a mechanism with a cam (its replacement
         is instantaneous); gear meshes roll (``plan.rolling``).
@@ -122,28 +134,112 @@ def solve_poses(
     if guess is None and needs_continuation(plan):
         dense, picks = densified(plan, inputs)
         if len(dense) > len(inputs):
-            motion = _solve_poses(plan, dense, None)
+            motion = _checked(plan, dense, None, rates)
             return Motion(
                 inputs,
                 MappingProxyType({k: v[picks] for k, v in motion.q.items()}),
                 MappingProxyType({k: v[picks] for k, v in motion.qd.items()}),
                 MappingProxyType({k: v[picks] for k, v in motion.qdd.items()}),
             )
-    return _solve_poses(plan, inputs, guess)
+    return _checked(plan, inputs, guess, rates)
+
+
+def _checked(
+    plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None, rates: bool
+) -> Motion:
+    """:func:`_solve_poses` over a path of inputs, with no silent change of assembly mode.
+
+    The steps the closed-form dyads watch are looked into with finer steps
+    (:func:`kinematics.branches.confirm_branches`); a path with steps coarser
+    than the continuation step is first checked on intermediate poses, positions
+    only. A single pose keeps the sketch's mode without a path to check.
+    """
+    positions = _positions_of(plan)
+    watch: list = []
+    motion = _precise_errors(
+        plan, inputs, lambda found: _solve_poses(plan, inputs, guess, rates, found), watch
+    )
+    if len(inputs) < 2:
+        return motion
+    path = inputs
+    if _largest_step(plan, inputs) > CONTINUATION_STEP and len(
+        dense := densified(plan, inputs)[0]
+    ) > len(inputs):
+        path, watch = dense, []
+        _precise_errors(plan, dense, lambda found: positions(dense, found), watch)
+    if watch:
+        branches.confirm_branches(plan, path, watch, positions)
+    return motion
+
+
+def _largest_step(plan: SolvePlan, inputs: np.ndarray) -> float:
+    """The largest step between rows (and from the sketch to the first), in units of scale."""
+    scale = plan.driver_scale
+    first = float(np.max(np.abs(inputs[0]) / scale))
+    steps = np.abs(np.diff(inputs, axis=0))
+    return max(first, float(np.max(steps / scale)) if steps.size else 0.0)
+
+
+def _positions_of(plan: SolvePlan):
+    """``solve(rows, watch, groups)``: the plan's positions at ``rows``, watched steps to ``watch``.
+
+    With ``groups`` (labels), only the steps up to the last of them are solved.
+    """
+
+    def positions(rows: np.ndarray, watch: list | None, groups=None) -> Motion:
+        part = plan
+        if groups:
+            last = max(i for i, step in enumerate(plan.steps) if step.label in groups)
+            part = dataclasses.replace(plan, steps=plan.steps[: last + 1])
+        return _solve_poses(part, rows, None, False, watch)
+
+    return positions
+
+
+def _precise_errors(plan: SolvePlan, inputs: np.ndarray, solve, watch: list) -> Motion:
+    """``solve(watch)``, its errors made precise along the path of ``inputs``.
+
+    A group solved before the one that failed may have changed its assembly
+    mode on the way: that is looked into first. A closed-form dyad that does
+    not close names the whole stretch of inputs and its dead points; a dead
+    centre inside a path that goes on through it is a change point
+    (:class:`~kinematics.errors.BranchChangeError`).
+    """
+    try:
+        return solve(watch)
+    except MechanismError as exc:
+        if len(inputs) > 1 and watch:
+            branches.confirm_branches(plan, inputs, watch, _positions_of(plan))
+        if isinstance(exc, SingularPoseError) and exc.dead_centre and exc.indices is not None:
+            k = int(exc.indices[0])
+            if branches.is_change_point(inputs, k):
+                raise branches.change_point(plan, exc.group, inputs[k]) from None
+        if type(exc) is AssemblyError and exc.indices is not None:
+            raise branches.unassembled_range(plan, inputs, exc, _positions_of(plan)) from None
+        raise
 
 
 def _solve_poses(
-    plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    rates: bool = True,
+    watch: list | None = None,
 ) -> Motion:
+    """Every group in turn, for every pose; the rates only with ``rates``.
+
+    The steps where a closed-form dyad may have changed its assembly mode are
+    appended to ``watch``.
+    """
     n = inputs.shape[0]
     ground = plan.mechanism.ground
     frames: dict[str, Frame] = {}
     q, qd, qdd = tables = tuple(LinkTable(frames, order, n) for order in ("q", "qd", "qdd"))
     _place_drivers(plan, inputs, frames, tables)
-    pins: dict = {}
+    pins = dyads.PinCache()
     for step in plan.steps:
         # looked up on the module at call time, so a test can switch a closed form off
-        if dyads.frame_dyad(step, plan, frames, tables, pins, inputs):
+        if dyads.frame_dyad(step, plan, frames, tables, pins, inputs, rates, watch):
             continue
         if not dyads.place_dyad(step, plan, q, inputs):
             start = {
@@ -151,11 +247,18 @@ def _solve_poses(
                 for link in step.links
             }
             follow(step, plan, q, inputs, start)
-        _rates(step, plan, tables, inputs)
+        if rates:
+            _rates(step, plan, tables, inputs)
     zero = np.zeros((n, 3))
-    for table in (q, qd, qdd):
+    q.setdefault(ground, zero)
+    if not rates:
+        empty: Mapping[str, np.ndarray] = MappingProxyType({})
+        # positions only: the joints as the closed forms found them (the full solve carries
+        # them through their links' frames, as it always has: the two agree to rounding)
+        return Motion(inputs, q, empty, empty, MappingProxyType(frames), dict(pins))
+    for table in (qd, qdd):
         table.setdefault(ground, zero)
-    return Motion(inputs, q, qd, qdd, MappingProxyType(frames))
+    return Motion(inputs, q, qd, qdd, MappingProxyType(frames), pins.on_frames())
 
 
 def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) -> None:
@@ -175,7 +278,9 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
     ratio = _conditioning(scaled_jacobian(jac, plan.length))
     if step.group is not None and (ratio <= DEAD_CENTRE).any():
         k = int(np.argmax(ratio <= DEAD_CENTRE))
-        raise SingularPoseError.at(step.label, inputs[k], f"σ_min/σ_max = {ratio[k]:.2g}")
+        raise SingularPoseError.at(
+            step.label, inputs[k], f"σ_min/σ_max = {ratio[k]:.2g}", plan.driver_kinds
+        )
     solve = np.linalg.solve if jac.shape[1] == jac.shape[2] else _least_squares
     z_dot = solve(jac, -known_v[..., None])[..., 0]
     for i, link in enumerate(step.links):

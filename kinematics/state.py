@@ -35,7 +35,11 @@ class Motion:
     ``frames`` holds the links solved in closed form as
     :class:`~kinematics.frames.Frame` s; their ``q`` (which needs the angle's
     ``arctan2``) is computed the first time it is read, and :meth:`point`
-    uses the frame directly.
+    uses the frame directly. ``pins`` holds the points the solve found on
+    the way from a link's frame, ``(link, x, y) -> (x, y, vx, vy, ax, ay)``,
+    so that they need not be found again; a solve of positions only (the
+    rates None) also holds the dyads' joints there, as their closed forms
+    found them (through a link's frame they agree to rounding).
     """
 
     inputs: np.ndarray
@@ -43,6 +47,7 @@ class Motion:
     qd: Mapping[str, np.ndarray]
     qdd: Mapping[str, np.ndarray]
     frames: Mapping[str, Frame] = field(default_factory=dict)
+    pins: Mapping[tuple, tuple] = field(default_factory=dict)
 
     def point(self, link: str, c: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Position, velocity, acceleration (each (N, 2)) of sketch point ``c`` on ``link``."""

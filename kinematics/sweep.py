@@ -19,19 +19,96 @@ from __future__ import annotations
 import csv
 import io
 import math
-from collections.abc import Mapping
+import os
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
+from functools import partial
 
 import numpy as np
 
 from structure.errors import EdgeListError, EdgeListProblem
 
+from .errors import SweepSizeError
 from .forces import forces_over
 from .plan import SolvePlan
-from .planar import cross, norm, units
+from .planar import cross, norm, rotate_many, units
 from .solve import solve_poses
+from .state import Motion
 
-__all__ = ["Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"]
+__all__ = [
+    "BYTES_PER_POSE_ITEM",
+    "Sweep",
+    "memory_limit",
+    "parse_inputs",
+    "read_inputs",
+    "sweep",
+    "transmission_angle",
+]
+
+
+#: bytes per pose a sweep's results and the solve's temporaries take, per named point and link
+#: (measured: 90–320 with rates; a third of it for positions only)
+BYTES_PER_POSE_ITEM = 320
+
+
+def memory_limit() -> int:
+    """The memory a sweep may take: half of this machine's (4 GiB where it cannot be read)."""
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
+    except (ValueError, OSError, AttributeError):  # pragma: no cover - platform
+        return 4 * 2**30
+
+
+class _LazyMapping(Mapping):
+    """A read-only mapping whose content ``load()`` makes the first time it is read."""
+
+    __slots__ = ("_data", "_load")
+
+    def __init__(self, load: Callable[[], dict]) -> None:
+        self._load = load
+        self._data: dict | None = None
+
+    def _items(self) -> dict:
+        if self._data is None:
+            self._data = self._load()
+        return self._data
+
+    def __getitem__(self, key: str):
+        return self._items()[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._items())
+
+    def __len__(self) -> int:
+        return len(self._items())
+
+    def __repr__(self) -> str:
+        return repr(self._items())
+
+
+class _LazyValues(Mapping):
+    """A read-only mapping of fixed keys, each value made by its own function when first read."""
+
+    __slots__ = ("_makers", "_values")
+
+    def __init__(self, makers: dict[str, Callable[[], np.ndarray]]) -> None:
+        self._makers = makers
+        self._values: dict[str, np.ndarray] = {}
+
+    def __getitem__(self, key: str) -> np.ndarray:
+        value = self._values.get(key)
+        if value is None:
+            value = self._values[key] = self._makers[key]()
+        return value
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._makers)
+
+    def __len__(self) -> int:
+        return len(self._makers)
+
+    def __repr__(self) -> str:
+        return repr({k: self[k] for k in self._makers})
 
 
 @dataclass(frozen=True)
@@ -46,6 +123,12 @@ class Sweep:
     the middle pin, in [0, π]; RRP the rod against the slide's normal, RPR,
     PRP, RPP as in :func:`_prismatic_transmission`, in [0, π/2]; 0 (or π) is a
     dead centre.
+
+    The points' arrays are views into one block laid out once (a point on the
+    ground: read-only constants); the links' angles and rates, the
+    transmission angles and the balancing are computed when first read. A
+    sweep of positions only (``sweep(..., rates=False)``) has ``position`` and
+    ``angle`` alone, and no balancing.
     """
 
     inputs: np.ndarray
@@ -115,59 +198,148 @@ def _rrr_pins(plan: SolvePlan) -> dict[str, tuple[str, str, str]]:
     return out
 
 
-def sweep(plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360) -> Sweep:
+def sweep(
+    plan: SolvePlan, inputs: np.ndarray | None = None, steps: int = 360, *, rates: bool = True
+) -> Sweep:
     """Solve every pose of ``inputs`` (shape (poses,) or (poses, drivers)).
 
     By default each rotating driver makes one turn from the sketch in
-    ``steps`` equal steps (a sliding driver stays at the sketch).
+    ``steps`` equal steps (a sliding driver stays at the sketch). With
+    ``rates`` false only the positions are solved (points' ``position``, links'
+    ``angle``); a dyad's joint is then the closed form's own value, which the
+    full sweep's (carried through a link's frame, as it always was) matches to
+    rounding.
 
     Raises
     ------
+    SweepSizeError
+        The poses would take more memory than a sweep may (:func:`memory_limit`).
     AssemblyError, SingularPoseError
-        At the first pose that cannot be solved, naming it.
+        At the first pose that cannot be solved, naming it (a branch change
+        is a :class:`~kinematics.errors.BranchChangeError`).
     """
     if inputs is None:
+        _check_size(plan, steps, rates)
         turn = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
         inputs = np.column_stack([turn if d.kind == "R" else np.zeros(steps) for d in plan.drivers])
     inputs = np.asarray(inputs, dtype=float)
     if inputs.ndim == 1:
         inputs = inputs[:, None]
-    motion = solve_poses(plan, inputs)
+    _check_size(plan, inputs.shape[0], rates)
+    motion = solve_poses(plan, inputs, rates=rates)
+    points = _point_block(plan, motion, rates)
+    keys = ("angle", "omega", "epsilon") if rates else ("angle",)
     links = {
-        name: {
-            "angle": motion.q[name][:, 2],
-            "omega": motion.qd[name][:, 2],
-            "epsilon": motion.qdd[name][:, 2],
-        }
+        name: _LazyValues({key: partial(_link_column, motion, name, key) for key in keys})
         for name in plan.mechanism.moving_links
         if name in motion.q
     }
-    points = {}
+    transmission = _LazyMapping(partial(_transmission, plan, motion, points))
+    balancing: Mapping[str, np.ndarray] = (
+        _LazyMapping(partial(_balancing, plan, motion)) if rates else {}
+    )
+    return Sweep(inputs, links, points, transmission, balancing)
+
+
+def _check_size(plan: SolvePlan, poses: int, rates: bool) -> None:
+    """Refuse a sweep whose results would not fit in the memory a sweep may take."""
+    items = len(plan.points) + len(plan.mechanism.moving_links)
+    per_pose = BYTES_PER_POSE_ITEM * max(items, 1) // (1 if rates else 3)
+    limit = memory_limit()
+    if poses * per_pose > limit:
+        raise SweepSizeError(
+            f"a sweep of {poses} poses would take about {poses * per_pose / 1e9:.3g} GB of "
+            f"memory, more than the {limit / 1e9:.3g} GB a sweep may take (half of this "
+            f"machine's): ask for at most {limit // per_pose} poses (steps=, --steps on the "
+            "command line), or sweep the inputs in parts"
+        )
+
+
+def _link_column(motion: Motion, link: str, key: str) -> np.ndarray:
+    """A link's angle, ω or ε over the poses (the angle by ``arctan2``, when first read)."""
+    if key == "angle":
+        return motion.q[link][:, 2]
+    return (motion.qd if key == "omega" else motion.qdd)[link][:, 2]
+
+
+def _point_block(plan: SolvePlan, motion: Motion, rates: bool) -> dict[str, dict[str, np.ndarray]]:
+    """Every named point's position (velocity, acceleration), as views into one block.
+
+    The block has shape (points, 1 or 3, 2, poses): each point's quantity is
+    the transposed view ``block[i, k].T``, of shape (poses, 2), with x and y
+    each contiguous. A point on the ground is a read-only constant.
+    """
+    n = motion.inputs.shape[0]
+    keys = ("position", "velocity", "acceleration") if rates else ("position",)
+    ground = plan.mechanism.ground
+    moving = [
+        (name, link, c)
+        for name, (link, c) in plan.points.items()
+        if link != ground and link in motion.q  # a virtual link: rolling gear meshes do without
+    ]
+    block = np.empty((len(moving), len(keys), 2, n))
+    row = {name: i for i, (name, _, _) in enumerate(moving)}
+    zero = np.broadcast_to(np.zeros(2), (n, 2))
+    out: dict[str, dict[str, np.ndarray]] = {}
     for name, (link, c) in plan.points.items():
-        if link not in motion.q:  # on a virtual link: rolling gear meshes do without them
-            continue
+        if name in row:
+            i = row[name]
+            _fill_point(motion, link, c, block[i], rates)
+            out[name] = {key: block[i, k].T for k, key in enumerate(keys)}
+        elif link == ground:
+            fixed = np.broadcast_to(c.astype(float), (n, 2))
+            out[name] = dict(zip(keys, (fixed, zero, zero), strict=False))
+    return out
+
+
+def _fill_point(motion: Motion, link: str, c: np.ndarray, rows: np.ndarray, rates: bool) -> None:
+    """Write the motion of sketch point ``c`` of ``link`` into ``rows`` (1 or 3, 2, poses)."""
+    targets = tuple(rows[k // 2, k % 2] for k in range(6 if rates else 2))
+    found = motion.pins.get((link, float(c[0]), float(c[1])))
+    if found is not None:  # found by the solve from the link's frame: the same values
+        for target, value in zip(targets, found, strict=False):
+            target[...] = value
+        return
+    frame = motion.frames.get(link)
+    if frame is not None:
+        frame.point_into(c, targets)
+        return
+    if rates:
         x, v, a = motion.point(link, c)
-        points[name] = {"position": x, "velocity": v, "acceleration": a}
-    transmission = {
+        for k, value in enumerate((x, v, a)):
+            rows[k] = value.T
+        return
+    q = motion.q[link]
+    rows[0] = (q[:, :2] + rotate_many(q[:, 2], c)).T
+
+
+def _transmission(plan: SolvePlan, motion: Motion, points) -> dict[str, np.ndarray]:
+    """Each dyad's transmission angle over the poses (see :class:`Sweep`)."""
+    out = {
         label: _angles(points[b]["position"], points[c]["position"], points[d]["position"])
         for label, (b, c, d) in _rrr_pins(plan).items()
         if all(x in points for x in (b, c, d))
     }
-    transmission.update(_rrp_transmission(plan, motion, points))
-    transmission.update(_prismatic_transmission(plan, motion, points))
-    balancing: dict[str, np.ndarray] = {}
+    out.update(_rrp_transmission(plan, motion, points))
+    out.update(_prismatic_transmission(plan, motion, points))
+    return out
+
+
+def _balancing(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
+    """The balancing moment (or force) over the poses, when the file has loads."""
     rolled = any(link not in motion.q for link, *_ in plan.contacts)
-    if plan.mechanism.loads and not rolled and not any(s.group is None for s in plan.steps):
-        forces = forces_over(plan, motion)
-        sliding = {d.link for d in plan.drivers if d.kind == "P"}
-        balancing = {
-            f"{'slide force' if k in sliding else 'moment'} {k}": v
-            for k, v in forces.balancing_moment.items()
-        }
-        if forces.balancing_force is not None:
-            balancing["force x"] = forces.balancing_force[:, 0]
-            balancing["force y"] = forces.balancing_force[:, 1]
-    return Sweep(inputs, links, points, transmission, balancing)
+    if not plan.mechanism.loads or rolled or any(s.group is None for s in plan.steps):
+        return {}
+    forces = forces_over(plan, motion)
+    sliding = {d.link for d in plan.drivers if d.kind == "P"}
+    balancing = {
+        f"{'slide force' if k in sliding else 'moment'} {k}": v
+        for k, v in forces.balancing_moment.items()
+    }
+    if forces.balancing_force is not None:
+        balancing["force x"] = forces.balancing_force[:, 0]
+        balancing["force y"] = forces.balancing_force[:, 1]
+    return balancing
 
 
 def _slide_direction(plan: SolvePlan, motion, pair_id: int, link: str) -> np.ndarray | None:

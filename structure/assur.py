@@ -21,8 +21,10 @@ characterization of the Assur graphs from engineering", EJC 31 (2010).
 >>> from structure import parse_edgelist
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> d = decompose(m)
->>> [(g.links, g.assur_class, g.order, g.kind) for g in d.groups]
+>>> [(g.links, g.assur_class, g.order, str(g.kind)) for g in d.groups]
 [(('2', '3'), 2, 2, 'RRR')]
+>>> d.groups[0].kind is DyadKind.RRR
+True
 """
 
 from __future__ import annotations
@@ -32,16 +34,26 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 import networkx as nx
+from networkx.utils import UnionFind
 
 from .errors import DecompositionError, MobilityError
-from .model import Hinge, Mechanism, PairKind, validated
-from .rigidity.constraints import MissingGeometry, RowKind, constraint_system, sketch_realization
+from .kinds import DyadKind, PairKind
+from .model import Hinge, Mechanism
+from .rigidity.constraints import (
+    ConstraintSystem,
+    MissingGeometry,
+    RowKind,
+    constraint_system,
+    sketch_realization,
+)
 from .rigidity.matching import irreducible_blocks
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
+from .validation import validated
 
 __all__ = [
     "AssurGroup",
     "Decomposition",
+    "DyadKind",
     "GroupPair",
     "classify_group",
     "decompose",
@@ -81,13 +93,17 @@ class GroupPair:
 
 @dataclass(frozen=True, slots=True)
 class AssurGroup:
-    """One Assur group: links, pairs, class, order and (for dyads) kind."""
+    """One Assur group: links, pairs, class, order and (for dyads) kind.
+
+    ``kind`` is a :class:`~structure.kinds.DyadKind` for a dyad (it compares
+    and prints as its letters, ``'RRR'``), None for larger groups.
+    """
 
     links: tuple[str, ...]
     pairs: tuple[GroupPair, ...]
     assur_class: int
     order: int
-    kind: str | None = None
+    kind: DyadKind | None = None
 
     @property
     def external_pairs(self) -> tuple[GroupPair, ...]:
@@ -304,30 +320,53 @@ def _groups_from_blocks(
     """
     system = analysis.system
     assert analysis.blocks is not None
-    assigned = analysis.assigned
+    start = _completing_blocks(mechanism, drivers, system, analysis.blocks)
+    merged = UnionFind(start.values())
+    owner = _block_owners(system, analysis.assigned, start, merged)
+    _merge_split_pairs(system, analysis.assigned, owner, merged)
+    nodes, edges, root = _merge_cycles(system, analysis.assigned, owner, merged)
+    members: dict[int, list[str]] = {}
+    for link in mechanism.moving_links:
+        if link in start:
+            members.setdefault(root[start[link]], []).append(link)
+    position = {link: i for i, link in enumerate(mechanism.links)}
+    order = _topological_order(
+        nodes, edges, {b: min(position[x] for x in members[b]) for b in nodes}
+    )
+    return _decomposition(
+        mechanism, drivers, members, order, edges, tuple(removed_links), tuple(removed_pairs)
+    )
+
+
+def _completing_blocks(
+    mechanism: Mechanism,
+    drivers: Sequence[str],
+    system: ConstraintSystem,
+    blocks: Sequence[Sequence[int]],
+) -> dict[str, int]:
+    """The block that completes each moving link other than a driver (its later unknown's)."""
     block_of = [0] * len(system.unknowns)
-    for b, units in enumerate(analysis.blocks):
+    for b, units in enumerate(blocks):
         for u in units:
             block_of[u] = b
     driver_set = set(drivers)
-    start: dict[str, int] = {}
-    for link in mechanism.moving_links:
-        if link not in driver_set:
-            start[link] = max(block_of[system.pos[link]], block_of[system.ang[link]])
-    parent = {b: b for b in start.values()}
+    return {
+        link: max(block_of[system.pos[link]], block_of[system.ang[link]])
+        for link in mechanism.moving_links
+        if link not in driver_set
+    }
 
-    def find(b: int) -> int:
-        while parent[b] != b:
-            parent[b] = parent[parent[b]]
-            b = parent[b]
-        return b
 
-    def union(a: int, b: int) -> None:
-        ra, rb = find(a), find(b)
-        if ra != rb:
-            parent[max(ra, rb)] = min(ra, rb)
+def _block_owners(
+    system: ConstraintSystem,
+    assigned: Sequence[Sequence[int]],
+    start: Mapping[str, int],
+    merged: UnionFind,
+) -> list[int | None]:
+    """The block each unknown belongs to; a pin follows the link whose row fixes it.
 
-    # the block each unknown belongs to; a pin follows the link whose row fixes it
+    Links whose pin rows fix one pin are merged into one block.
+    """
     owner: list[int | None] = [
         None if unknown.kind == "pin" else start.get(unknown.owner) for unknown in system.unknowns
     ]
@@ -341,8 +380,17 @@ def _groups_from_blocks(
                 if known is None:
                     owner[u] = b
                 else:
-                    union(known, b)
-    # rows of one pair fixing unknowns of different blocks: a pair is never split
+                    merged.union(known, b)
+    return owner
+
+
+def _merge_split_pairs(
+    system: ConstraintSystem,
+    assigned: Sequence[Sequence[int]],
+    owner: Sequence[int | None],
+    merged: UnionFind,
+) -> None:
+    """Merge the blocks whose unknowns rows of one pair fix: a pair is never split."""
     by_pair: dict[int, set[int]] = {}
     for r, units in enumerate(assigned[: system.n_pair_rows]):
         if system.row_kind[r] is _PIN:
@@ -352,48 +400,74 @@ def _groups_from_blocks(
             if b is not None:
                 by_pair.setdefault(system.row_pair[r], set()).add(b)
     for blocks in by_pair.values():
-        first, *rest = blocks
-        for b in rest:
-            union(first, b)
+        if len(blocks) > 1:
+            merged.union(*blocks)
+
+
+def _merge_cycles(
+    system: ConstraintSystem,
+    assigned: Sequence[Sequence[int]],
+    owner: Sequence[int | None],
+    merged: UnionFind,
+) -> tuple[list[int], set[tuple[int, int]], dict[int, int]]:
+    """Merge blocks that depend on each other until their dependencies form a DAG.
+
+    Returns the merged blocks (each named by a member), the DAG's edges and
+    the merged block of every block.
+    """
     while True:
-        edges: set[tuple[int, int]] = set()
-        for r, units in enumerate(assigned[: system.n_pair_rows]):
-            if not units or owner[units[0]] is None:
-                continue
-            target = find(owner[units[0]])  # type: ignore[arg-type]
-            for w in system.row_adj[r]:
-                b = owner[w]
-                if b is not None:
-                    source = find(b)
-                    if source != target:
-                        edges.add((source, target))
-        nodes = sorted({find(b) for b in parent})
+        root = {b: merged[b] for b in merged}
+        merged_owner = [None if b is None else root[b] for b in owner]
+        edges = _block_dependencies(system, assigned, merged_owner)
+        nodes = sorted(set(root.values()))
         number = {b: i for i, b in enumerate(nodes)}
-        succ: list[tuple[int, ...]] = [() for _ in nodes]
-        grouped: dict[int, list[int]] = {}
+        successors: list[list[int]] = [[] for _ in nodes]
         for u, v in edges:
-            grouped.setdefault(number[u], []).append(number[v])
-        for u, vs in grouped.items():
-            succ[u] = tuple(vs)
+            successors[number[u]].append(number[v])
         # strongly connected components of the group graph: cycles merge
         components = irreducible_blocks(
-            succ, [[i] for i in range(len(nodes))], len(nodes), as_successors=True
+            successors, [[i] for i in range(len(nodes))], len(nodes), as_successors=True
         )
         cycles = [c for c in components if len(c) > 1]
         if not cycles:
-            break
+            return nodes, edges, root
         for c in cycles:
-            first, *rest = (nodes[i] for i in c)
-            for b in rest:
-                union(first, b)
-    members: dict[int, list[str]] = {}
-    for link in mechanism.moving_links:
-        if link in start:
-            members.setdefault(find(start[link]), []).append(link)
-    position = {link: i for i, link in enumerate(mechanism.links)}
-    order = _topological_order(
-        nodes, edges, {b: min(position[x] for x in members[b]) for b in nodes}
-    )
+            merged.union(*(nodes[i] for i in c))
+
+
+def _block_dependencies(
+    system: ConstraintSystem,
+    assigned: Sequence[Sequence[int]],
+    merged_owner: Sequence[int | None],
+) -> set[tuple[int, int]]:
+    """``(source, target)`` for each merged block a row of another block also touches.
+
+    ``merged_owner`` is the merged block of each unknown (None for the knowns).
+    """
+    edges: set[tuple[int, int]] = set()
+    for r, units in enumerate(assigned[: system.n_pair_rows]):
+        if not units:
+            continue
+        target = merged_owner[units[0]]
+        if target is None:
+            continue
+        for w in system.row_adj[r]:
+            source = merged_owner[w]
+            if source is not None and source != target:
+                edges.add((source, target))
+    return edges
+
+
+def _decomposition(
+    mechanism: Mechanism,
+    drivers: Sequence[str],
+    members: Mapping[int, list[str]],
+    order: Sequence[int],
+    edges: set[tuple[int, int]],
+    removed_links: tuple[str, ...],
+    removed_pairs: tuple[int, ...],
+) -> Decomposition:
+    """The groups of the merged blocks, in ``order``, and their dependency DAG."""
     index = {b: i for i, b in enumerate(order)}
     level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
     compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
@@ -408,12 +482,7 @@ def _groups_from_blocks(
     group_dag.add_nodes_from(range(len(groups)))
     group_dag.add_edges_from((index[u], index[v]) for u, v in edges)
     return Decomposition(
-        mechanism,
-        tuple(drivers),
-        groups,
-        nx.freeze(group_dag),
-        tuple(removed_links),
-        tuple(removed_pairs),
+        mechanism, tuple(drivers), groups, nx.freeze(group_dag), removed_links, removed_pairs
     )
 
 
@@ -455,10 +524,11 @@ def _build_group(links: list[str], found: _GroupPairs) -> AssurGroup:
         )
     n_external = sum(1 for p in pairs if p.external)
     assur_class = classify_group(links, joints)
-    kind = None
+    kind: DyadKind | None = None
     if len(links) == 2:
         a, b = links
-        kind = _dyad_kind(external_letter.get(a, "?") + middle_letter + external_letter.get(b, "?"))
+        letters = external_letter.get(a, "?") + middle_letter + external_letter.get(b, "?")
+        kind = DyadKind.from_letters(letters)
     return AssurGroup(tuple(links), tuple(pairs), assur_class, n_external, kind)
 
 
@@ -513,14 +583,6 @@ def _group_pairs(
     return pairs, joints, external_letter, middle_letter
 
 
-_DYAD_KINDS = {"RRR": "RRR", "RRP": "RRP", "PRR": "RRP", "RPR": "RPR", "PRP": "PRP",
-               "RPP": "RPP", "PPR": "RPP"}  # fmt: skip
-
-
-def _dyad_kind(letters: str) -> str:
-    return _DYAD_KINDS.get(letters, letters)
-
-
 def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
     """Class of a group from its internal joints (each: the group links it joins).
 
@@ -545,23 +607,13 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
 
 
 def _components(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
-    parent = {x: x for x in links}
-
-    def find(x: str) -> str:
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
-    count = len(links) + len(joints)
-    for j in joints:
-        count -= 1  # the joint node merges with its first link
-        for x in j[1:]:
-            ra, rb = find(j[0]), find(x)
-            if ra != rb:
-                parent[ra] = rb
-                count -= 1
-    return count
+    """Connected components of the bipartite graph links ↔ joints (a joint joins ≥ 2 links)."""
+    if len(joints) < 2:  # a dyad's one joint: no union-find needed
+        return len(links) + len(joints) - sum(len(j) for j in joints)
+    pieces = UnionFind(links)
+    for joint in joints:
+        pieces.union(*joint)
+    return len({pieces[x] for x in links})
 
 
 def _longest_contour(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:

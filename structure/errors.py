@@ -16,6 +16,7 @@ __all__ = [
     "EdgeListProblem",
     "MechanismError",
     "MobilityError",
+    "StatementError",
 ]
 
 
@@ -66,6 +67,19 @@ class EdgeListError(MechanismError, ValueError):
         if hidden:
             shown.append(f"{self.source}: ... and {hidden} more problems")
         return "\n".join(shown)
+
+
+class StatementError(MechanismError, ValueError):
+    """One statement (a pair, a point, a load, a driver) that cannot be built.
+
+    ``reason`` says what is wrong, without saying where: the reader that
+    made the statement files it under its line (or JSON path) as an
+    :class:`EdgeListProblem`.
+    """
+
+    def __init__(self, reason: str):
+        self.reason = reason
+        super().__init__(reason)
 
 
 class MobilityError(MechanismError):

@@ -34,7 +34,7 @@ deep dependency graphs occur.
 >>> m, groups = random_mechanism_with_groups(9, seed=1)
 >>> len(m.moving_links), sum(len(g) for g in groups)
 (9, 8)
->>> from structure.report import analyze
+>>> from structure import analyze
 >>> r = analyze(m)
 >>> r.mobility.W, {frozenset(g) for g in groups} == {frozenset(g.links) for g in r.groups}
 (1, True)
@@ -45,20 +45,14 @@ from __future__ import annotations
 import random
 from collections.abc import Iterable
 
-from .model import Driver, Mechanism, Pair, PairKind
+from .kinds import DyadKind, PairKind
+from .model import Driver, Mechanism, Pair
 
 __all__ = ["GROUP_KINDS", "random_mechanism", "random_mechanism_with_groups"]
 
-#: every group kind the generator knows, with its number of links
-GROUP_KINDS = {
-    "RRR": 2,
-    "RRP": 2,
-    "RPR": 2,
-    "PRP": 2,
-    "RPP": 2,
-    "triad": 4,
-    "class4": 4,
-}
+#: every group kind the generator knows, with its number of links: the five
+#: dyads (:class:`~structure.kinds.DyadKind`, by their letters), a triad, a class IV group
+GROUP_KINDS = {**{kind.value: 2 for kind in DyadKind}, "triad": 4, "class4": 4}
 
 _SLIDER_SHARE = 0.2  # chance that an external pair of a triad / class IV group is P
 _RECENT = 8  # window of recent links for the "deep" choice of a known link
@@ -228,6 +222,21 @@ def random_mechanism_with_groups(
     3 0 R J4
     """
     kinds = tuple(kinds)
+    _check_arguments(n_links, kinds, compound)
+    b = _Builder(random.Random(seed), compound)
+    driver = b.new_link()
+    b.n_r += 1
+    b.r_points["0"].append("J1")
+    b.r_points[driver].append("J1")
+    b.pairs.append(Pair(id=1, kind=_R, a="0", b=driver, point="J1"))
+    b.known.append(driver)
+    groups = _attach_groups(b, kinds, n_links - 1)
+    name = f"random mechanism ({n_links} links, seed {seed})"
+    mechanism = Mechanism.from_pairs(b.pairs, drivers=[Driver(driver)], name=name)
+    return mechanism, groups
+
+
+def _check_arguments(n_links: int, kinds: tuple[str, ...], compound: float) -> None:
     if n_links < 1:
         raise ValueError(f"n_links must be at least 1, not {n_links}")
     if not kinds:
@@ -237,22 +246,17 @@ def random_mechanism_with_groups(
         raise ValueError(f"unknown group kind(s) {unknown} (use {', '.join(GROUP_KINDS)})")
     if not 0.0 <= compound <= 1.0:
         raise ValueError(f"compound is a probability, not {compound}")
-    rng = random.Random(seed)
-    b = _Builder(rng, compound)
-    driver = b.new_link()
-    b.n_r += 1
-    b.r_points["0"].append("J1")
-    b.r_points[driver].append("J1")
-    b.pairs.append(Pair(id=1, kind=_R, a="0", b=driver, point="J1"))
-    b.known.append(driver)
+
+
+def _attach_groups(b: _Builder, kinds: tuple[str, ...], remaining: int) -> list[tuple[str, ...]]:
+    """Attach random groups of ``kinds`` while one fits in ``remaining`` links."""
     groups: list[tuple[str, ...]] = []
-    remaining = n_links - 1
     sizes = {k: GROUP_KINDS[k] for k in kinds}
     while True:
         fitting = [k for k in kinds if sizes[k] <= remaining]
         if not fitting:
-            break
-        kind = fitting[rng.randrange(len(fitting))]
+            return groups
+        kind = fitting[b.rng.randrange(len(fitting))]
         if kind == "triad":
             links = b.triad()
         elif kind == "class4":
@@ -262,9 +266,6 @@ def random_mechanism_with_groups(
         groups.append(links)
         b.known.extend(links)
         remaining -= len(links)
-    name = f"random mechanism ({n_links} links, seed {seed})"
-    mechanism = Mechanism.from_pairs(b.pairs, drivers=[Driver(driver)], name=name)
-    return mechanism, groups
 
 
 def random_mechanism(

@@ -27,7 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .model import Mechanism, PairKind
+from .kinds import PairKind
+from .model import Mechanism
 from .rigidity.constraints import (
     ConstraintSystem,
     MissingGeometry,

@@ -7,6 +7,13 @@ sketch. Revolute pairs that name the same point form one compound hinge: a
 hinge joining k links is k - 1 pairs. Every transformation returns a new
 Mechanism; nothing here computes anything beyond validation.
 
+The statements are built from Python values by :func:`make_pair`,
+:func:`make_point`, :func:`make_load` and :func:`make_driver`, with the checks
+of :mod:`structure.validation` that both readers share. ``PairKind``,
+``LoadKind``, ``validated``, ``DRIVER_KEYS`` and ``LOAD_KINDS`` are defined in
+:mod:`structure.kinds` and :mod:`structure.validation` and importable from
+here as before.
+
 >>> m = Mechanism.from_pairs([("0", "1", "R", "A"), ("1", "2", "R", "B"),
 ...                           ("2", "3", "R", "C"), ("3", "0", "R", "D")],
 ...                          drivers=["1"], name="four-bar")
@@ -19,16 +26,25 @@ Mechanism; nothing here computes anything beyond validation.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from enum import Enum
 from functools import cached_property
 from types import MappingProxyType
 from typing import Any
 
 import networkx as nx
 
-from .errors import EdgeListError, EdgeListProblem
+from .errors import EdgeListError, EdgeListProblem, StatementError
+from .kinds import LoadKind, PairKind
+from .validation import (
+    DRIVER_KEYS,
+    LOAD_KINDS,
+    check_driver,
+    check_load,
+    check_pair,
+    check_point,
+    validated,
+)
 
 __all__ = [
     "DRIVER_KEYS",
@@ -37,40 +53,23 @@ __all__ = [
     "GroundJoint",
     "Hinge",
     "Load",
+    "LoadKind",
     "Mechanism",
     "Pair",
     "PairKind",
     "PointDef",
-    "pair_from_tokens",
+    "make_driver",
+    "make_load",
+    "make_pair",
+    "make_point",
     "validated",
 ]
-
-#: motion keys accepted on a ``driver`` line (rad/s, rad/s², m/s, m/s²)
-DRIVER_KEYS = ("omega", "epsilon", "v", "a")
 
 
 def number_text(value: float) -> str:
     """Shortest text that reads back as the same float (``'0'`` for 0.0)."""
     text = repr(float(value))
     return text[:-2] if text.endswith(".0") else text
-
-
-class PairKind(Enum):
-    """Kind of a kinematic pair.
-
-    ``R`` revolute and ``P`` prismatic are lower pairs of class 5 (P5, two
-    constraints each); ``H`` is a higher pair of class 4 (P4, one constraint):
-    a cam contact or a gear mesh.
-    """
-
-    R = "R"
-    P = "P"
-    H = "H"
-
-    @property
-    def constraints(self) -> int:
-        """Number of scalar constraints the pair imposes in the plane."""
-        return 1 if self is PairKind.H else 2
 
 
 @dataclass(frozen=True, slots=True)
@@ -223,30 +222,26 @@ class PointDef:
         return f"point {self.name} {x} {y}{on}"
 
 
-#: load statements and the numbers each takes after its link (and point)
-LOAD_KINDS = {
-    "force": ("point", 2),  # force LINK POINT fx fy (N, world frame)
-    "moment": (None, 1),  # moment LINK M (N·m, counter-clockwise positive)
-    "mass": ("point", 2),  # mass LINK m J S  (kg, kg·m² about the centre of mass S)
-    "gravity": (None, 2),  # gravity gx gy (m/s²), no link
-    "balance": ("point", 0),  # balance LINK POINT angle=DEG: a balancing force, not a moment
-}
-
-
 @dataclass(frozen=True, slots=True)
 class Load:
     """A load statement: ``force``, ``moment``, ``mass``, ``gravity`` or ``balance``.
 
-    ``values`` holds its numbers in the order of the statement (``fx, fy``;
-    ``M``; ``m, J``; ``gx, gy``; the direction in degrees for ``balance``).
+    ``kind`` is a :class:`~structure.kinds.LoadKind` (a word given here is
+    turned into one). ``values`` holds its numbers in the order of the
+    statement (``fx, fy``; ``M``; ``m, J``; ``gx, gy``; the direction in
+    degrees for ``balance``). :func:`make_load` builds one with its checks.
     """
 
-    kind: str
+    kind: LoadKind
     link: str
     point: str | None
     values: tuple[float, ...]
     line_no: int = field(default=0, compare=False)
     exact: tuple[str | None, ...] = ()
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.kind, LoadKind):
+            object.__setattr__(self, "kind", LoadKind(self.kind))
 
     def text(self, k: int) -> str:
         """The ``k``-th number as written (an exact expression) or as its shortest decimal."""
@@ -257,13 +252,14 @@ class Load:
     def statement(self) -> str:
         """The canonical load line."""
         numbers = [self.text(k) for k in range(len(self.values))]
-        if self.kind == "gravity":
+        word = self.kind.value
+        if self.kind is LoadKind.GRAVITY:
             return "gravity " + " ".join(numbers)
-        head = [self.kind, self.link] + ([self.point] if self.point else [])
-        if self.kind == "balance":
+        head = [word, self.link] + ([self.point] if self.point else [])
+        if self.kind is LoadKind.BALANCE:
             return " ".join([*head, f"angle={numbers[0]}"])
-        if self.kind == "mass":
-            return " ".join([self.kind, self.link, *numbers, self.point or ""]).strip()
+        if self.kind is LoadKind.MASS:
+            return " ".join([word, self.link, *numbers, self.point or ""]).strip()
         return " ".join([*head, *numbers])
 
 
@@ -305,6 +301,174 @@ class GroundJoint:
     kind: PairKind
     pair: Pair | None
     point: str | None
+
+
+# ----------------------------------------------------------------------------- builders
+_NUMBER_FIELDS = {
+    "angle": "angle_deg",
+    "normal": "normal_deg",
+    "span": "span",
+    "friction": "friction",
+    "circle": "circle",
+    "module": "module",
+}
+
+
+def make_pair(
+    pair_id: int,
+    kind: PairKind | str,
+    a: str,
+    b: str,
+    point: str | None = None,
+    *,
+    gear: bool = False,
+    line_no: int = 0,
+    **options: Any,
+) -> Pair:
+    """Build a :class:`Pair` from Python values, with the checks every reader shares.
+
+    Parameters
+    ----------
+    pair_id : int
+        1-based position of the pair in its mechanism.
+    kind : PairKind or str
+        The kind or its letter (``"R"``, ``"P"``, ``"H"``).
+    a, b : str
+        The two links it joins.
+    point : str or None
+        The hinge point (R), a point of the slide line (P), the contact (H).
+    gear : bool
+        H only: the pair is a gear mesh (the ``gear`` word of a line).
+    line_no : int
+        Line of the description it comes from (0 when built in Python).
+    **options
+        The edge-list options with typed values: ``angle``, ``normal``
+        (degrees), ``span``, ``friction``, ``circle``, ``module`` (numbers);
+        ``flat``, ``roller``, ``internal`` (link names); ``centers`` (two
+        point names, one may be None); ``z`` (two tooth numbers, None for an
+        unknown one). None is the same as leaving the option out.
+
+    Raises
+    ------
+    StatementError
+        An unknown kind, a pair from a link to itself, an option the kind
+        does not take, a value out of its range
+        (:func:`~structure.validation.check_pair`).
+
+    >>> make_pair(1, "P", "3", "0", "C", angle=30).statement
+    '3 0 P C angle=30'
+    >>> make_pair(2, PairKind.H, "1", "2", "K", gear=True, z=(20, None)).teeth
+    (20, None)
+    """
+    given = {key: value for key, value in options.items() if value is not None} if options else {}
+    kind = check_pair(kind, a, b, given, gear=gear)
+    if not given and not gear:
+        return Pair(pair_id, kind, a, b, point, line_no=line_no)
+    return Pair(pair_id, kind, a, b, point, line_no=line_no, gear=bool(gear), **_pair_fields(given))
+
+
+def _pair_fields(options: Mapping[str, Any]) -> dict[str, Any]:
+    """The :class:`Pair` fields of checked options (numbers as floats, ``z`` as ``teeth``)."""
+    fields: dict[str, Any] = {}
+    for key, value in options.items():
+        if key in _NUMBER_FIELDS:
+            fields[_NUMBER_FIELDS[key]] = float(value)
+        elif key == "centers":
+            fields["centers"] = tuple(c or None for c in value)
+        elif key == "z":
+            fields["teeth"] = tuple(None if t is None else int(t) for t in value)
+        else:  # flat, roller, internal: link names
+            fields[key] = value
+    return fields
+
+
+def _pair_from_item(item: Sequence[Any], pair_id: int) -> Pair:
+    """A pair from ``(a, b, kind[, point][, options])`` (see :meth:`Mechanism.from_pairs`)."""
+    options: Mapping[str, Any] = {}
+    if item and isinstance(item[-1], Mapping):
+        item, options = item[:-1], item[-1]
+    if len(item) < 3:
+        raise StatementError("a pair needs at least 'a b KIND'")
+    if len(item) > 4:
+        raise StatementError("a pair is (a, b, kind[, point][, options])")
+    kind = item[2] if isinstance(item[2], PairKind) else str(item[2])
+    point = None if len(item) < 4 or item[3] is None else str(item[3])
+    named = {key: _names_as_text(key, value) for key, value in options.items()}
+    return make_pair(pair_id, kind, str(item[0]), str(item[1]), point, **named)
+
+
+def _names_as_text(key: str, value: Any) -> Any:
+    """An option naming links or points, its names as strings (numbers name links too)."""
+    if value is None:
+        return None
+    if key in ("flat", "roller", "internal"):
+        return str(value)
+    if key == "centers" and isinstance(value, (tuple, list)):
+        return tuple(None if c is None else str(c) for c in value)
+    return value
+
+
+def make_point(
+    name: str,
+    x: float,
+    y: float,
+    on: str | None = None,
+    *,
+    line_no: int = 0,
+    exact: tuple[str | None, str | None] = (None, None),
+) -> PointDef:
+    """Build a :class:`PointDef`, with the checks every reader shares.
+
+    Raises
+    ------
+    StatementError
+        A coordinate that is not a finite number.
+    """
+    check_point(name, x, y)
+    return PointDef(name, float(x), float(y), on, line_no, exact)
+
+
+def make_load(
+    kind: LoadKind | str,
+    link: str,
+    point: str | None,
+    values: Sequence[float],
+    *,
+    line_no: int = 0,
+    exact: tuple[str | None, ...] = (),
+) -> Load:
+    """Build a :class:`Load`, with the checks every reader shares.
+
+    ``link`` is ``""`` for gravity; ``point`` is None for a moment or gravity.
+
+    Raises
+    ------
+    StatementError
+        An unknown kind, a link or point the kind does not take (or lacks),
+        the wrong number of values, a value that is not finite, a negative
+        mass or moment of inertia (:func:`~structure.validation.check_load`).
+
+    >>> make_load("mass", "2", "S2", (3, 0.1)).statement
+    'mass 2 3 0.1 S2'
+    """
+    kind = check_load(kind, link, point, values)
+    return Load(kind, link, point, tuple(float(v) for v in values), line_no, exact)
+
+
+def make_driver(
+    link: str, motion: Iterable[tuple[str, float]] = (), *, line_no: int = 0
+) -> Driver:
+    """Build a :class:`Driver`, with the checks every reader shares.
+
+    Raises
+    ------
+    StatementError
+        A motion key other than ``omega``, ``epsilon``, ``v``, ``a``, or a
+        value that is not a finite number.
+    """
+    motion = tuple(motion)
+    check_driver(link, motion)
+    return Driver(link, tuple((key, float(value)) for key, value in motion), line_no)
 
 
 def _freeze_graph(pairs: Iterable[Pair], links: Iterable[str]) -> nx.MultiGraph:
@@ -370,8 +534,17 @@ class Mechanism:
         """Build and validate a mechanism from Python data.
 
         Each pair is a :class:`Pair` or a tuple ``(a, b, kind[, point][, options])``
-        where ``options`` is a dict with the same keys as the edge-list format
-        (``angle`` in degrees, ``flat``, ``roller``, ``centers``, ``normal``).
+        built by :func:`make_pair`: ``kind`` is a :class:`PairKind` or its
+        letter, names are turned into strings, and ``options`` is a dict with
+        the same keys as the edge-list format and typed values (``angle`` in
+        degrees, ``flat``, ``roller``, ``centers`` as a pair of names,
+        ``normal``, ``z`` as a pair of tooth numbers, ``gear=True``, ...).
+
+        Raises
+        ------
+        EdgeListError
+            Every pair that cannot be built (its reason prefixed by
+            ``pair i:``), or any problem :func:`validated` finds.
 
         >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R", "B"),
         ...                           ("2", "0", "P", "C", {"angle": 0})])
@@ -385,14 +558,11 @@ class Mechanism:
                 built.append(item)
                 continue
             item = tuple(item)
-            options = item[-1] if item and isinstance(item[-1], Mapping) else {}
-            head = [str(t) for t in (item[:-1] if options else item)]
-            tokens = head + [f"{k}={_option_text(v)}" for k, v in options.items()]
-            pair, why = pair_from_tokens(tokens, i, 0)
-            if pair is None:
-                problems.append(EdgeListProblem(0, " ".join(tokens), f"pair {i}: {why}"))
-            else:
-                built.append(pair)
+            try:
+                built.append(_pair_from_item(item, i))
+            except StatementError as exc:
+                text = " ".join(map(str, item))
+                problems.append(EdgeListProblem(0, text, f"pair {i}: {exc.reason}"))
         if isinstance(points, Mapping):
             pts = {k: PointDef(k, float(v[0]), float(v[1])) for k, v in points.items()}
         else:
@@ -434,6 +604,10 @@ class Mechanism:
         on first use.
         """
         return _freeze_graph(self.pairs, self.links)
+
+    def has_link(self, link: str) -> bool:
+        """True when ``link`` is a link of the mechanism (the ground included)."""
+        return link in self._by_link
 
     def joined(self, a: str, b: str) -> bool:
         """True when some pair joins links ``a`` and ``b``, or they share a compound hinge."""
@@ -503,120 +677,6 @@ class Mechanism:
         return f"<Mechanism{title}: {len(self.moving_links)} moving links, {len(self.pairs)} pairs>"
 
 
-_PAIR_KEYS = {
-    PairKind.R: ("circle",),
-    PairKind.P: ("angle", "span", "friction"),
-    PairKind.H: ("flat", "roller", "centers", "normal", "z", "internal", "module"),
-}
-
-
-def _angle(text: str) -> float:
-    value = float(text)
-    if not math.isfinite(value):
-        raise ValueError(text)
-    return value
-
-
-def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pair | None, str]:
-    """Read ``a b KIND [POINT] [key=value ...]`` into a Pair, or say what is wrong.
-
-    Returns ``(pair, "")`` or ``(None, reason)``; never raises on bad tokens.
-
-    >>> pair_from_tokens("3 0 P C angle=90".split(), 1, 5)[0].angle
-    1.5707963267948966
-    >>> pair_from_tokens("1 2 Q".split(), 1, 5)[1]
-    "unknown pair kind 'Q' (use R, P or H)"
-    """
-    if len(tokens) < 3:
-        return None, "a pair needs at least 'a b KIND'"
-    a, b, kind_text = tokens[0], tokens[1], tokens[2]
-    try:
-        kind = PairKind(kind_text)
-    except ValueError:
-        return None, f"unknown pair kind {kind_text!r} (use R, P or H)"
-    if a == b:
-        return None, f"pair joins link {a} to itself"
-    rest = tokens[3:]
-    point = None
-    gear = kind is PairKind.H and "gear" in rest
-    if gear:
-        rest = [t for t in rest if t != "gear"]
-    if rest and "=" not in rest[0]:
-        point, rest = rest[0], rest[1:]
-    opts: dict[str, str] = {}
-    for tok in rest:
-        key, eq, value = tok.partition("=")
-        if not eq or not key or not value:
-            return None, f"unexpected token {tok!r} (options are key=value)"
-        if key not in _PAIR_KEYS[kind]:
-            allowed = ", ".join(_PAIR_KEYS[kind]) or "none"
-            return None, f"unknown option {key!r} for a {kind.value} pair (allowed: {allowed})"
-        if key in opts:
-            return None, f"option {key!r} given twice"
-        opts[key] = value
-    fields: dict[str, Any] = {}
-    try:
-        if "angle" in opts:
-            fields["angle_deg"] = _angle(opts["angle"])
-        if "normal" in opts:
-            fields["normal_deg"] = _angle(opts["normal"])
-    except ValueError:
-        return None, "angle and normal must be finite numbers of degrees"
-    for key, meaning in (
-        ("span", "the distance between the slide's two contact points (metres), > 0"),
-        ("friction", "the Coulomb friction coefficient of the slide, >= 0"),
-        ("circle", "the friction-circle radius of the pin (metres), >= 0"),
-    ):
-        if key not in opts:
-            continue
-        try:
-            fields[key] = float(opts[key])
-        except ValueError:
-            return None, f"{key}= is {meaning}"
-        value = fields[key]
-        if not math.isfinite(value) or value < 0 or (key == "span" and value == 0):
-            return None, f"{key}= is {meaning}"
-    if "flat" in opts:
-        fields["flat"] = opts["flat"]
-    if "roller" in opts:
-        fields["roller"] = opts["roller"]
-    if "centers" in opts:
-        parts = opts["centers"].split(",")
-        if len(parts) != 2 or not any(parts):
-            return (
-                None,
-                "centers=O1,O2 names the centres of curvature on a and b (one may be empty)",
-            )
-        fields["centers"] = (parts[0] or None, parts[1] or None)
-    if gear or "z" in opts or "internal" in opts or "module" in opts:
-        if not gear:
-            return None, "z=, internal= and module= belong to a gear mesh: write 'gear'"
-        fields["gear"] = True
-        if "z" in opts:
-            teeth = opts["z"].split(",")
-            if len(teeth) != 2 or not all(t == "?" or (t.isdigit() and int(t) > 0) for t in teeth):
-                return None, "z=za,zb gives the tooth numbers of a and b (positive integers or ?)"
-            fields["teeth"] = tuple(None if t == "?" else int(t) for t in teeth)
-        if "internal" in opts:
-            if opts["internal"] not in (a, b):
-                return None, f"internal={opts['internal']} is not one of the pair's links {a}, {b}"
-            fields["internal"] = opts["internal"]
-        if "module" in opts:
-            try:
-                fields["module"] = float(opts["module"])
-            except ValueError:
-                return None, "module= is the gear module in metres"
-            if not math.isfinite(fields["module"]) or fields["module"] <= 0:
-                return None, "module= is the gear module in metres"
-    return Pair(pair_id, kind, a, b, point, line_no=line_no, **fields), ""
-
-
-def _option_text(value: Any) -> str:
-    if isinstance(value, (tuple, list)):
-        return ",".join("" if v is None else str(v) for v in value)
-    return str(value)
-
-
 def _hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:
     """Group revolute pairs into hinges by point name (unnamed: one hinge each)."""
     by_point: dict[str, list[Pair]] = {}
@@ -635,119 +695,3 @@ def _hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:
             links.setdefault(p.b)
         out.append(Hinge(point, tuple(links), tuple(p.id for p in group)))
     return tuple(out)
-
-
-def _pieces(nodes: Iterable[str], edges: Iterable[tuple[str, str]]) -> list[set[str]]:
-    """Connected pieces of a small graph (union-find)."""
-    parent = {x: x for x in nodes}
-
-    def find(x: str) -> str:
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
-    for a, b in edges:
-        parent[find(a)] = find(b)
-    pieces: dict[str, set[str]] = {}
-    for x in parent:
-        pieces.setdefault(find(x), set()).add(x)
-    return list(pieces.values())
-
-
-def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
-    """Check a mechanism's topology; raise one EdgeListError listing every problem.
-
-    Checks: at least one pair; no pair from a link to itself; compound hinges
-    whose pairs connect all their links without a cycle; every link connected
-    to the ground; drivers that exist and are joined to the ground; options
-    that name links of their own pair.
-    """
-    problems: list[EdgeListProblem] = []
-
-    def bad(line_no: int, reason: str, line: str = "") -> None:
-        problems.append(EdgeListProblem(line_no, line, reason))
-
-    first_of: dict[str, Pair] = {}
-    for p in m.pairs:
-        first_of.setdefault(p.a, p)
-        first_of.setdefault(p.b, p)
-
-    if not m.pairs:
-        bad(0, "no kinematic pairs: the description is empty")
-        raise EdgeListError(m.source, problems)
-    for p in m.pairs:
-        for role, link in (("flat", p.flat), ("roller", p.roller)):
-            if link is not None and link not in (p.a, p.b):
-                bad(
-                    p.line_no,
-                    f"{role}={link} is not one of the pair's links {p.a}, {p.b}",
-                    p.statement,
-                )
-        if p.flat is not None and p.roller is not None and p.flat == p.roller:
-            bad(p.line_no, f"link {p.flat} cannot be both flat and the roller", p.statement)
-    for h in m.hinges:
-        if len(h.pairs) < 2:
-            continue
-        parts = _pieces(h.links, [m.pair(i).links for i in h.pairs])
-        first = m.pair(h.pairs[0])
-        if len(parts) > 1:
-            text = " | ".join(",".join(sorted(c)) for c in parts)
-            bad(
-                first.line_no,
-                f"the pairs at point {h.point} do not connect its links ({text})",
-                first.statement,
-            )
-        elif len(h.pairs) != len(h.links) - 1:
-            cyc = m.pair(h.pairs[-1])
-            bad(
-                cyc.line_no,
-                f"the pairs at point {h.point} close a cycle: a hinge of {len(h.links)} "
-                f"links has {len(h.links) - 1} pairs, {len(h.pairs)} are listed",
-                cyc.statement,
-            )
-    if not m._by_link.get(m.ground):
-        bad(ground_line, f"the ground {m.ground} is joined to no link", f"ground {m.ground}")
-    else:
-        reach = m.connected_to_ground()
-        loose = [link for link in m.links if link not in reach]
-        if loose:
-            first = min((first_of[x] for x in loose), key=lambda p: p.id)
-            bad(
-                first.line_no,
-                f"link(s) not connected to the ground {m.ground}: {', '.join(loose)}",
-                first.statement,
-            )
-    seen_drivers: set[str] = set()
-    for d in m.drivers:
-        if d.link in seen_drivers:
-            bad(d.line_no, f"driver {d.link} is named twice", d.statement)
-        seen_drivers.add(d.link)
-        if d.link == m.ground:
-            bad(d.line_no, f"the ground {d.link} cannot be a driver", d.statement)
-        elif d.link not in m._by_link:
-            bad(d.line_no, f"driver {d.link} is not a link of the mechanism", d.statement)
-        elif not m.joined(d.link, m.ground):
-            bad(
-                d.line_no,
-                f"driver {d.link} is not joined to the ground {m.ground}",
-                d.statement,
-            )
-        for key, _ in d.motion:
-            if key not in DRIVER_KEYS:
-                bad(d.line_no, f"unknown driver option {key!r} (use {', '.join(DRIVER_KEYS)})")
-    for load in m.loads:
-        if load.kind != "gravity" and load.link not in m._by_link:
-            bad(load.line_no, f"{load.kind} on unknown link {load.link}", load.statement)
-        elif load.kind != "gravity" and load.link == m.ground and load.kind != "balance":
-            bad(load.line_no, f"a {load.kind} on the ground does nothing", load.statement)
-    for p in m.points.values():
-        if not (math.isfinite(p.x) and math.isfinite(p.y)):
-            bad(p.line_no, f"point {p.name} has non-finite coordinates", p.statement)
-        if p.on is not None and p.on not in m._by_link:
-            bad(p.line_no, f"point {p.name} is fixed to unknown link {p.on}", p.statement)
-    if problems:
-        # file order; problems of the whole file (line 0) last
-        problems.sort(key=lambda q: (q.line_no == 0, q.line_no))
-        raise EdgeListError(m.source, problems)
-    return m

@@ -31,8 +31,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .errors import EdgeListError, EdgeListProblem
-from .model import Mechanism, Pair, PairKind, validated
+from .errors import EdgeListError, EdgeListProblem, StatementError
+from .kinds import PairKind
+from .model import Mechanism, Pair
+from .validation import validated
 
 __all__ = ["Replacement", "RollerRemoval", "replace_higher_pairs"]
 
@@ -83,75 +85,95 @@ def replace_higher_pairs(
     highs = [p for p in mechanism.pairs if p.kind is PairKind.H]
     if not highs:
         return mechanism, ()
-    problems: list[EdgeListProblem] = []
     taken = set(mechanism.links) | set(mechanism.points)
-    removed_ids: set[int] = set()
-    rollers: dict[int, RollerRemoval] = {}
-    contact: dict[
-        int, tuple[str, str, str | None, str | None]
-    ] = {}  # pid -> a, b, center a, center b
-
-    for p in highs:
-        a, b = p.a, p.b
-        ca, cb = p.centers if p.centers is not None else (None, None)
-        if p.roller is not None:
-            roller = p.roller
-            cam = p.other(roller)
-            others = [q for q in mechanism.pairs_of(roller) if q.id != p.id]
-            if roller in mechanism.driver_links:
-                problems.append(EdgeListProblem(p.line_no, p.label, f"roller {roller} is a driver"))
-                continue
-            if len(others) != 1 or others[0].kind is not PairKind.R:
-                problems.append(
-                    EdgeListProblem(
-                        p.line_no,
-                        p.label,
-                        f"roller {roller} must be joined to its follower by exactly one R pair "
-                        f"besides this contact ({len(others)} other pairs found)",
-                    )
-                )
-                continue
-            axis_pair = others[0]
-            follower = axis_pair.other(roller)
-            axis = axis_pair.point or _fresh(f"{roller}.axis", taken)
-            removed_ids.add(axis_pair.id)
-            rollers[p.id] = RollerRemoval(roller, follower, axis, (axis_pair, p))
-            cam_center = p.center_of(cam)
-            a, b = cam, follower
-            ca, cb = cam_center, axis
-        contact[p.id] = (a, b, ca, cb)
-    if problems:
-        raise EdgeListError(mechanism.source, problems)
-
+    contacts, rollers = _contacts(mechanism, highs, taken)
+    removed_ids = {r.removed_pairs[0].id for r in rollers.values()}
     kept = [p for p in mechanism.pairs if p.kind is not PairKind.H and p.id not in removed_ids]
     next_id = max(p.id for p in mechanism.pairs) + 1
     new_pairs: list[Pair] = []
     records: list[Replacement] = []
     for k, p in enumerate(highs, start=1):
-        a, b, ca, cb = contact[p.id]
         v = _fresh(f"v{k}", taken)
-        flat = p.flat if p.flat in (a, b) else None
-        if flat is None:
-            ca = ca or _fresh(f"{v}.{a}", taken)
-            cb = cb or _fresh(f"{v}.{b}", taken)
-            made = (
-                Pair(next_id, PairKind.R, a, v, ca, line_no=p.line_no),
-                Pair(next_id + 1, PairKind.R, v, b, cb, line_no=p.line_no),
-            )
-        else:
-            curved = b if flat == a else a
-            center = (cb if flat == a else ca) or _fresh(f"{v}.{curved}", taken)
-            angle = _face_angle(mechanism, p, center)
-            r_pair = Pair(next_id, PairKind.R, curved, v, center, line_no=p.line_no)
-            p_pair = Pair(
-                next_id + 1, PairKind.P, v, flat, center, angle_deg=angle, line_no=p.line_no
-            )
-            made = (r_pair, p_pair)
+        made = _virtual_pairs(mechanism, p, contacts[p.id], v, next_id, taken)
         next_id += 2
         new_pairs.extend(made)
         records.append(Replacement(v, p, made, rollers.get(p.id)))
     replaced = mechanism.evolve(pairs=tuple(kept + new_pairs))
     return validated(replaced), tuple(records)
+
+
+#: a contact after roller removal: links a, b and the centres of curvature on each
+_Contact = tuple[str, str, str | None, str | None]
+
+
+def _contacts(
+    mechanism: Mechanism, highs: list[Pair], taken: set[str]
+) -> tuple[dict[int, _Contact], dict[int, RollerRemoval]]:
+    """Each higher pair's contact, with its roller (if any) removed first.
+
+    Raises
+    ------
+    EdgeListError
+        A roller that is a driver or is not joined to its follower by one R pair.
+    """
+    problems: list[EdgeListProblem] = []
+    rollers: dict[int, RollerRemoval] = {}
+    contacts: dict[int, _Contact] = {}
+    for p in highs:
+        ca, cb = p.centers if p.centers is not None else (None, None)
+        if p.roller is None:
+            contacts[p.id] = (p.a, p.b, ca, cb)
+            continue
+        try:
+            removal = _remove_roller(mechanism, p, taken)
+        except StatementError as exc:
+            problems.append(EdgeListProblem(p.line_no, p.label, exc.reason))
+            continue
+        rollers[p.id] = removal
+        cam = p.other(removal.roller)
+        contacts[p.id] = (cam, removal.follower, p.center_of(cam), removal.axis)
+    if problems:
+        raise EdgeListError(mechanism.source, problems)
+    return contacts, rollers
+
+
+def _remove_roller(mechanism: Mechanism, p: Pair, taken: set[str]) -> RollerRemoval:
+    """Remove the roller of ``p`` with its R pair to the follower; the contact moves to its axis."""
+    roller = p.roller
+    assert roller is not None
+    others = [q for q in mechanism.pairs_of(roller) if q.id != p.id]
+    if roller in mechanism.driver_links:
+        raise StatementError(f"roller {roller} is a driver")
+    if len(others) != 1 or others[0].kind is not PairKind.R:
+        raise StatementError(
+            f"roller {roller} must be joined to its follower by exactly one R pair "
+            f"besides this contact ({len(others)} other pairs found)"
+        )
+    axis_pair = others[0]
+    follower = axis_pair.other(roller)
+    axis = axis_pair.point or _fresh(f"{roller}.axis", taken)
+    return RollerRemoval(roller, follower, axis, (axis_pair, p))
+
+
+def _virtual_pairs(
+    mechanism: Mechanism, p: Pair, contact: _Contact, v: str, next_id: int, taken: set[str]
+) -> tuple[Pair, Pair]:
+    """The two lower pairs that join virtual link ``v`` to the contact's links."""
+    a, b, ca, cb = contact
+    flat = p.flat if p.flat in (a, b) else None
+    if flat is None:
+        ca = ca or _fresh(f"{v}.{a}", taken)
+        cb = cb or _fresh(f"{v}.{b}", taken)
+        return (
+            Pair(next_id, PairKind.R, a, v, ca, line_no=p.line_no),
+            Pair(next_id + 1, PairKind.R, v, b, cb, line_no=p.line_no),
+        )
+    curved = b if flat == a else a
+    center = (cb if flat == a else ca) or _fresh(f"{v}.{curved}", taken)
+    angle = _face_angle(mechanism, p, center)
+    r_pair = Pair(next_id, PairKind.R, curved, v, center, line_no=p.line_no)
+    p_pair = Pair(next_id + 1, PairKind.P, v, flat, center, angle_deg=angle, line_no=p.line_no)
+    return r_pair, p_pair
 
 
 def _face_angle(mechanism: Mechanism, pair: Pair, center: str) -> float | None:

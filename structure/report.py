@@ -1,8 +1,9 @@
 """The structural report: counts, mobility, replacement, drivers, Assur groups, formula.
 
 :func:`analyze` runs the whole structural analysis the way the textbook
-does it; :func:`format_report` prints it as a worked answer and
-:func:`report_to_dict` gives the JSON-ready form.
+does it. Its text and JSON forms (``format_report``, ``report_to_dict``,
+...) are in :mod:`structure.readwrite.reports`; importing them from here
+still works for one release, with a DeprecationWarning.
 
 >>> from structure import parse_edgelist
 >>> r = analyze(parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"]))
@@ -13,13 +14,14 @@ does it; :func:`format_report` prints it as a worked answer and
 from __future__ import annotations
 
 import itertools
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import networkx as nx
 
-from .assur import AssurGroup, Decomposition, decompose, driver_candidates, roman
+from .assur import AssurGroup, Decomposition, decompose, driver_candidates
 from .errors import DecompositionError, EdgeListError, MobilityError
 from .mobility import Mobility, mobility_analysis
 from .model import Mechanism
@@ -28,16 +30,11 @@ from .rigidity.constraints import constraint_system, sketch_problems
 from .rigidity.rank import generic_rank
 from .utils import paused_gc
 
-__all__ = [
-    "DriverChoice",
-    "StructuralReport",
-    "all_driver_choices",
-    "analyze",
-    "format_mobility_error",
-    "format_report",
-    "mobility_error_dict",
-    "report_to_dict",
-]
+__all__ = ["DriverChoice", "StructuralReport", "all_driver_choices", "analyze"]
+
+#: names that moved to :mod:`structure.readwrite.reports`
+_MOVED_TO_READWRITE = ("format_mobility_error", "format_report", "mobility_error_dict",
+                       "report_to_dict")  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -184,181 +181,20 @@ def all_driver_choices(report: StructuralReport, limit: int = 1000) -> tuple[Dri
     return tuple(out)
 
 
-# ----------------------------------------------------------------------------- text
-def _counts_line(m: Mobility) -> str:
-    return f"n = {m.n} moving links, P5 = {m.P5} lower pairs, P4 = {m.P4} higher pairs"
+def __getattr__(name: str) -> Any:
+    """The report's text and JSON forms, still importable from here for one release.
 
+    The import is lazy: :mod:`structure.readwrite.reports` imports this
+    module, so importing it at the top would be a cycle.
+    """
+    if name not in _MOVED_TO_READWRITE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    warnings.warn(
+        f"structure.report.{name} is deprecated and will be removed in the next release: "
+        f"import it from structure (or structure.readwrite.reports) instead",
+        DeprecationWarning,
+        stacklevel=2,
+    )
+    from .readwrite import reports
 
-def format_report(report: StructuralReport, choices: Sequence[DriverChoice] = ()) -> str:
-    """The report as a worked answer, in the textbook's order."""
-    m, mob = report.mechanism, report.mobility
-    out: list[str] = []
-    title = m.name or "mechanism"
-    out.append(f"{title}  ({m.source})")
-    out.append("")
-    out.extend(_mobility_lines(mob))
-    if report.replacements:
-        out.append("")
-        out.append("Higher-pair replacement:")
-        for rep in report.replacements:
-            if rep.roller is not None:
-                r = rep.roller
-                out.append(
-                    f"  roller {r.roller} removed with pair {r.removed_pairs[0].label} "
-                    f"(its spin is passive); contact moved to its axis {r.axis} "
-                    f"on link {r.follower}"
-                )
-            new = ", ".join(p.label for p in rep.new_pairs)
-            out.append(
-                f"  {rep.pair.label} (line {rep.pair.line_no}) → virtual link "
-                f"{rep.virtual_link}: {new} ({rep.scheme})"
-            )
-        rm = report.replaced_mobility
-        out.append(f"  after replacement: {_counts_line(rm)}")
-        out.append(f"  {rm.formula}")
-    out.append("")
-    how = " (chosen: links joined to the ground)" if report.drivers_chosen else ""
-    out.append(f"Drivers: {', '.join(report.drivers)}{how}")
-    d = report.decomposition
-    if d.removed_links or d.removed_pairs:
-        pairs = ", ".join(report.replaced.pair(p).label for p in d.removed_pairs)
-        links = ", ".join(d.removed_links) or "none"
-        out.append(f"Set aside as redundant: link(s) {links}; pair(s) {pairs}")
-    out.append("")
-    out.append("Assur groups in solve order (the textbook detaches them from the last):")
-    if not report.groups:
-        out.append("  none: the drivers and the ground are the whole mechanism")
-    for i, g in enumerate(report.groups, start=1):
-        kind = f", {g.kind}" if g.kind else ""
-        known = ", ".join(g.known_links)
-        out.append(
-            f"  {i}. {g.label}  class {roman(g.assur_class)}, order {g.order}{kind}; "
-            f"attached to {known}"
-        )
-    out.append(f"Mechanism class: {roman(report.mechanism_class)}")
-    out.append(f"Structural formula: {report.formula}")
-    out.append(f"                    {report.textbook_formula}")
-    if choices:
-        out.append("")
-        out.append("Every admissible choice of drivers:")
-        for c in choices:
-            out.append(
-                f"  drivers {', '.join(c.drivers)}: class {roman(c.decomposition.mechanism_class)}"
-                f"  {c.decomposition.formula}"
-            )
-    return "\n".join(out) + "\n"
-
-
-def _mobility_lines(mob: Mobility) -> list[str]:
-    out = [f"Counts: {_counts_line(mob)}"]
-    if mob.redundant:
-        out.append(f"Redundant constraints: r = {mob.r}")
-        for x in mob.redundant:
-            where = f" (line {x.line_no})" if x.line_no else ""
-            out.append(f"  {x.constraints} in pair {x.label}{where}, {x.source}")
-    else:
-        out.append("Redundant constraints: r = 0")
-    if mob.passive:
-        out.append(f"Passive freedoms: W_passive = {mob.W_passive}")
-        for x in mob.passive:
-            out.append(f"  {x.dof} of link {x.link} ({x.source})")
-    else:
-        out.append("Passive freedoms: W_passive = 0")
-    out.append(mob.formula)
-    for note in mob.notes:
-        out.append(f"Note: {note}")
-    return out
-
-
-def format_mobility_error(error: MobilityError) -> str:
-    """The counts behind a mobility error, then the diagnostic."""
-    lines = []
-    if isinstance(error.mobility, Mobility):
-        lines.extend(_mobility_lines(error.mobility))
-    lines.append(f"error: {error}")
-    return "\n".join(lines) + "\n"
-
-
-# ----------------------------------------------------------------------------- JSON
-def _mobility_dict(mob: Mobility) -> dict[str, Any]:
-    return {
-        "n": mob.n,
-        "P5": mob.P5,
-        "P4": mob.P4,
-        "W_topology": mob.W_topology,
-        "redundant": mob.r,
-        "passive": mob.W_passive,
-        "W": mob.W,
-        "redundant_pairs": [
-            {"pair": x.label, "line": x.line_no, "constraints": x.constraints, "source": x.source}
-            for x in mob.redundant
-        ],
-        "passive_links": [{"link": x.link, "dof": x.dof, "source": x.source} for x in mob.passive],
-        "geometric_check": mob.geometric,
-        "notes": list(mob.notes),
-    }
-
-
-def _group_dict(g: AssurGroup) -> dict[str, Any]:
-    return {
-        "links": list(g.links),
-        "class": g.assur_class,
-        "order": g.order,
-        "kind": g.kind,
-        "attached_to": list(g.known_links),
-        "pairs": [
-            {"links": list(p.links), "kind": p.kind.value, "point": p.point, "external": p.external}
-            for p in g.pairs
-        ],
-    }
-
-
-def report_to_dict(
-    report: StructuralReport, choices: Sequence[DriverChoice] = ()
-) -> dict[str, Any]:
-    """JSON-ready dict: ``n, P5, P4, redundant, passive, W, replaced, groups, ...``."""
-    out: dict[str, Any] = {"name": report.mechanism.name, "source": report.mechanism.source}
-    out.update(_mobility_dict(report.mobility))
-    rm = report.replaced_mobility
-    out["replaced"] = {"n": rm.n, "P5": rm.P5, "P4": rm.P4, "W": rm.W}
-    out["replacements"] = [
-        {
-            "virtual_link": r.virtual_link,
-            "pair": r.pair.label,
-            "line": r.pair.line_no,
-            "scheme": r.scheme,
-            "new_pairs": [p.label for p in r.new_pairs],
-            "roller": r.roller.roller if r.roller else None,
-        }
-        for r in report.replacements
-    ]
-    out["drivers"] = list(report.drivers)
-    out["drivers_chosen"] = report.drivers_chosen
-    d = report.decomposition
-    out["set_aside"] = {
-        "links": list(d.removed_links),
-        "pairs": [report.replaced.pair(p).label for p in d.removed_pairs],
-    }
-    out["groups"] = [_group_dict(g) for g in report.groups]
-    out["group_dag"] = [list(e) for e in report.dag.edges]
-    out["mechanism_class"] = report.mechanism_class
-    out["formula"] = report.formula
-    out["textbook_formula"] = report.textbook_formula
-    if choices:
-        out["driver_choices"] = [
-            {
-                "drivers": list(c.drivers),
-                "mechanism_class": c.decomposition.mechanism_class,
-                "formula": c.decomposition.formula,
-                "groups": [_group_dict(g) for g in c.decomposition.groups],
-            }
-            for c in choices
-        ]
-    return out
-
-
-def mobility_error_dict(error: MobilityError) -> dict[str, Any]:
-    out: dict[str, Any] = {"error": str(error)}
-    if isinstance(error.mobility, Mobility):
-        out.update(_mobility_dict(error.mobility))
-    return out
+    return getattr(reports, name)

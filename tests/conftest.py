@@ -1,4 +1,4 @@
-"""Shared test helpers: the fixture directory and the expected-answer tables."""
+"""Shared test helpers: the fixture directory, the expected-answer tables, pyslvs's sdist."""
 
 from __future__ import annotations
 
@@ -10,6 +10,15 @@ try:
     import tomllib
 except ModuleNotFoundError:  # Python 3.10: the same parser as a package
     import tomli as tomllib
+
+from tests.pyslvs_sdist import (
+    PYSLVS_VERSION,
+    SDIST_DIR_VARIABLE,
+    PyslvsSdist,
+    download_sdist,
+    read_sdist,
+    sdist_dir,
+)
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 
@@ -34,3 +43,21 @@ def expected_table(names: tuple[str, ...] = STRUCTURE_TABLES) -> dict[str, dict]
 @pytest.fixture
 def fixtures_dir() -> Path:
     return FIXTURES
+
+
+@pytest.fixture(scope="session")
+def pyslvs_sdist() -> PyslvsSdist:
+    """pyslvs's own examples and published positions, read from its sdist.
+
+    The sdist is looked for in ``$ASSUR_PYSLVS_SDIST_DIR`` (else ``.cache/pyslvs``)
+    and downloaded there once when missing; without it the tests that need it skip
+    (CI downloads it first, see .ci/run).
+    """
+    directory = sdist_dir()
+    path, why = download_sdist(directory)
+    if path is None:
+        pytest.skip(
+            f"needs the pyslvs {PYSLVS_VERSION} sdist in {directory} "
+            f"(set {SDIST_DIR_VARIABLE} or run .ci/run online): {why}"
+        )
+    return read_sdist(path)

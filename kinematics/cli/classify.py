@@ -6,19 +6,20 @@ Imports the structure package only: no solver, no matplotlib (they come with ``-
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
+from pathlib import Path
 
 from structure.errors import MechanismError, MobilityError
 from structure.explain.structural import explain_structure
 from structure.readwrite.edgelist import read_edgelist
-from structure.report import (
-    all_driver_choices,
-    analyze,
+from structure.readwrite.reports import (
     format_mobility_error,
     format_report,
     mobility_error_dict,
     report_to_dict,
 )
+from structure.report import all_driver_choices, analyze
 
 from .output import EXIT_MECHANISM, EXIT_OK, failed, print_json
 from .plotting import check_plot, load_drawing
@@ -26,8 +27,27 @@ from .plotting import check_plot, load_drawing
 __all__ = ["run_classify"]
 
 
+def _is_batch(args: argparse.Namespace) -> bool:
+    """Several inputs, a directory, a glob, stdin, or a table's options: a batch."""
+    one = args.file
+    return bool(
+        args.more
+        or one == "-"
+        or Path(one).is_dir()
+        or (not Path(one).exists() and any(c in one for c in "*?["))
+        or args.format != "text"
+        or args.output
+        or args.jobs != 1
+        or args.scheduler
+        or args.dask_local
+    )
+
+
 def run_classify(args: argparse.Namespace) -> int:
-    """Classify the mechanism in ``args.file``; returns the exit code."""
+    """Classify the mechanism in ``args.file``, or many inputs into one table; the exit code."""
+    if _is_batch(args):
+        args.inputs = [args.file, *args.more]
+        return importlib.import_module(f"{__package__}.batch").run(args)
     try:
         check_plot(args.plot)
         report = analyze(read_edgelist(args.file), args.driver)

@@ -28,6 +28,7 @@ __all__ = [
     "animate",
     "save_forces_sheet",
     "save_kinematics_sheet",
+    "save_mechanism_drawing",
     "save_structure_sheet",
     "save_sweep_figure",
     "turn_inputs",
@@ -58,6 +59,13 @@ def _sketch_pose(report: StructuralReport) -> tuple[SolvePlan | None, KinematicS
         return plan, solve_pose(plan)
     except MechanismError:  # an incomplete sketch: the graph alone
         return None, None
+
+
+def save_mechanism_drawing(
+    report: StructuralReport, plan: SolvePlan, state: KinematicState, path: str
+) -> None:
+    """The mechanism alone at the pose of ``state``."""
+    _save(path, lambda: figures.draw_mechanism(report, plan, state))
 
 
 def save_kinematics_sheet(

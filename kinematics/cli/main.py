@@ -30,6 +30,8 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "gears": ("gears", "run_gears"),
     "sweep": ("motion", "run_sweep"),
     "animate": ("motion", "run_animate"),
+    "convert": ("convert", "run"),
+    "atlas": ("atlas", "run"),
     "report": ("report", "run_report"),
 }
 

@@ -132,9 +132,9 @@ def run_sweep(args: argparse.Namespace) -> int:
         result = sweep(plan, inputs, steps=args.steps)
         if args.plot:
             load_drawing().save_sweep_figure(result, plan, args.plot)
+        out = _sweep_lines(args, result)  # the sweep's ranges and balancing, computed when read
     except MechanismError as exc:
         return fail(str(exc))
-    out = _sweep_lines(args, result)
     if args.csv:
         with open(args.csv, "w", encoding="utf-8") as handle:
             handle.write(result.to_csv())

@@ -12,10 +12,12 @@ import argparse
 from collections.abc import Callable
 
 from structure.explain.structural import FORMATS, LANGUAGES
+from structure.readwrite.formats import WRITE_SUFFIXES
+from structure.readwrite.table import TABLE_FORMATS
 
 from .plotting import PLOT_FORMATS
 
-__all__ = ["COMMANDS", "build_parser"]
+__all__ = ["BATCH_FORMATS", "COMMANDS", "DRAWING_SUFFIXES", "SWEEP_SUFFIXES", "build_parser"]
 
 _DESCRIPTION = (
     "Planar mechanisms by Assur groups: structure, kinematics, forces, gear "
@@ -76,10 +78,51 @@ def _add_inputs(command: argparse.ArgumentParser, meaning: str) -> None:
     command.add_argument("--inputs", metavar="FILE", help=meaning)
 
 
+#: the formats of a batch classification's table: a text table or a data file
+BATCH_FORMATS = ("text", *TABLE_FORMATS)
+
+
+def add_run_options(
+    parser: argparse.ArgumentParser, formats: tuple[str, ...], default: str
+) -> None:
+    """``--format``, ``--output``, ``--jobs``, ``--scheduler``, ``--dask-local``."""
+    parser.add_argument(
+        "--format", choices=formats, default=default, help=f"table format (default {default})"
+    )
+    parser.add_argument(
+        "--output", "-o", metavar="FILE", help="write the table to FILE instead of stdout"
+    )
+    parser.add_argument(
+        "--jobs", "-j", type=int, default=1, metavar="N", help="local worker processes (default 1)"
+    )
+    parser.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="run on the Dask cluster of this scheduler, e.g. tcp://HOST:8786 (needs assur[dask])",
+    )
+    parser.add_argument(
+        "--dask-local",
+        type=int,
+        default=0,
+        metavar="N",
+        help="run on a Dask LocalCluster of N worker processes started here (needs assur[dask])",
+    )
+
+
 # ------------------------------------------------------------------ the commands
 def _classify_arguments(command: argparse.ArgumentParser) -> None:
-    """``classify FILE [--driver L]... [--all-drivers] [--json] [--plot OUT] [--explain]``."""
-    _add_file(command, "edge-list file (.edges) or its JSON form (.json)")
+    """``classify FILE [MORE ...] [--driver L]... [--all-drivers] [--json] [--plot OUT] ...``."""
+    _add_file(
+        command,
+        "edge-list file (.edges) or its JSON form (.json); or a directory, a quoted glob, or - "
+        "for JSON lines on stdin",
+    )
+    command.add_argument(
+        "more",
+        nargs="*",
+        metavar="MORE",
+        help="further inputs: several inputs are classified at once into one table",
+    )
     command.add_argument(
         "--driver", action="append", metavar="L", help="driving link (repeat for several)"
     )
@@ -94,6 +137,7 @@ def _classify_arguments(command: argparse.ArgumentParser) -> None:
         "draw the kinematic graph (and the mechanism, when the file has coordinates)",
     )
     _add_explain(command)
+    add_run_options(command, BATCH_FORMATS, "text")
 
 
 def _kinematics_arguments(command: argparse.ArgumentParser) -> None:
@@ -160,6 +204,93 @@ def _animate_arguments(command: argparse.ArgumentParser) -> None:
     _add_inputs(command, "the frames' driver inputs, as for 'assur sweep --inputs'")
 
 
+#: drawings at one pose: matplotlib's formats and DXF
+DRAWING_SUFFIXES = (".svg", ".png", ".pdf", ".dxf")
+#: tables of a sweep
+SWEEP_SUFFIXES = (".csv", ".parquet")
+
+
+def _convert_arguments(parser: argparse.ArgumentParser) -> None:
+    """``convert IN OUT [--driver L] [--pose X ...] [--flip GROUP] [--steps N] [--inputs FILE]``."""
+    parser.add_argument(
+        "file", metavar="IN", help="mechanism: .edges, .json (ours or pylinkage's), .pyslvs"
+    )
+    parser.add_argument(
+        "out",
+        metavar="OUT",
+        help="by extension: " + ", ".join((*WRITE_SUFFIXES, *DRAWING_SUFFIXES, *SWEEP_SUFFIXES)),
+    )
+    parser.add_argument(
+        "--driver", action="append", metavar="L", help="driving link (repeat for several)"
+    )
+    parser.add_argument(
+        "--pose",
+        nargs="+",
+        metavar="X",
+        help="draw at this input of each driver from the sketch: degrees, or metres for a "
+        "sliding driver (default: the sketch)",
+    )
+    parser.add_argument(
+        "--flip",
+        action="append",
+        metavar="GROUP",
+        default=[],
+        help="assemble this dyad (e.g. 'II(2,3)') in the other mode than the sketch's",
+    )
+    parser.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
+    parser.add_argument(
+        "--inputs", metavar="FILE", help="the sweep's poses, as for 'assur sweep --inputs'"
+    )
+
+
+def _atlas_arguments(parser: argparse.ArgumentParser) -> None:
+    """``atlas --links N [--dof F] [--labelled] [--summary] ...``: the options of the atlas."""
+    parser.add_argument(
+        "--links",
+        required=True,
+        metavar="N",
+        help="number of links: N, a range 4-10 or a list 4,6,8 (counts with no chain are skipped "
+        "in a range)",
+    )
+    parser.add_argument("--dof", type=int, default=1, metavar="F", help="degrees of freedom (1)")
+    parser.add_argument(
+        "--labelled",
+        action="store_true",
+        help="one row per labelled ground and driver choice (multiplicity 1) instead of one per "
+        "choice distinct up to the chain's symmetry",
+    )
+    parser.add_argument(
+        "--degenerate",
+        action="store_true",
+        help="keep the chains with a rigid subchain (left out and counted apart by default)",
+    )
+    parser.add_argument(
+        "--no-fractionated",
+        action="store_true",
+        help="leave out the chains that one link cuts in two (with --degenerate: pyslvs's atlas)",
+    )
+    parser.add_argument(
+        "--summary",
+        action="store_true",
+        help="print the table of chains and mechanisms per link count and Assur class instead "
+        "of the rows (the rows still go to --output)",
+    )
+    parser.add_argument(
+        "--count", action="store_true", help="print the chain counts only (no classification)"
+    )
+    parser.add_argument(
+        "--write-edgelists",
+        metavar="DIR",
+        help="write the edge list of every mechanism into DIR (the row's 'edgelist' names it)",
+    )
+    parser.add_argument(
+        "--resume",
+        action="store_true",
+        help="keep the chains already complete in --output and classify the rest",
+    )
+    add_run_options(parser, TABLE_FORMATS, "jsonl")
+
+
 def _report_arguments(command: argparse.ArgumentParser) -> None:
     """``report FILE [-o OUT] [--lang en|vi] [--steps N]``."""
     _add_file(command, "edge-list file (coordinates, loads and gears where it has them)")
@@ -195,6 +326,17 @@ COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...]
     ),
     ("sweep", "the kinematics over a whole turn of the driver(s)", _sweep_arguments),
     ("animate", "an animation of the mechanism over one turn of the driver(s)", _animate_arguments),
+    (
+        "convert",
+        "a mechanism into another format (edge list, JSON, pyslvs), its drawing (SVG, DXF, ...) "
+        "or its sweep (CSV, Parquet)",
+        _convert_arguments,
+    ),
+    (
+        "atlas",
+        "every kinematic chain of N links and F DOF, every mechanism of it classified",
+        _atlas_arguments,
+    ),
     (
         "report",
         "one self-contained HTML page: drawing, structure, kinematics, forces, cycle, gears, "

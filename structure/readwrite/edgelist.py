@@ -1,4 +1,9 @@
-"""Read and write the edge-list format of a mechanism.
+"""Read and write the edge-list format of a mechanism: the grammar, nothing more.
+
+The reader splits lines into tokens, ``key=value`` options and numbers, and
+builds each statement with :func:`~structure.model.make_pair` (and
+``make_point``, ``make_load``, ``make_driver``), whose checks the JSON reader
+shares; the writer prints each statement's canonical line.
 
 One statement per line, ``#`` starts a comment, tokens are separated by
 whitespace::
@@ -14,9 +19,14 @@ whitespace::
     point D 0.4 0
     point M 0.1 0.2 on=2            # a marker fixed to link 2
 
-Pair options: ``angle=DEG`` (P: slide direction), ``flat=L``, ``roller=L``,
-``centers=O1,O2``, ``normal=DEG`` (H). The words ``name``, ``ground``,
-``driver`` and ``point`` are reserved at the start of a line.
+Pair options: ``circle=R`` (R: friction circle); ``angle=DEG`` (P: slide
+direction), ``span=S``, ``friction=F``; ``flat=L``, ``roller=L``,
+``centers=O1,O2``, ``normal=DEG`` (H), and for a gear mesh the word ``gear``
+with ``z=ZA,ZB``, ``internal=L``, ``module=M``. Loads: ``force LINK POINT fx
+fy``, ``moment LINK M``, ``mass LINK m J S``, ``gravity gx gy``, ``balance
+LINK POINT angle=DEG``. The words ``name``, ``ground``, ``driver``, ``point``
+and the load words are reserved at the start of a line (unless the third
+word is a pair kind).
 
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> m.driver_links, len(m.pairs)
@@ -35,27 +45,45 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Iterable
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
-from ..errors import EdgeListError, EdgeListProblem
+from ..errors import EdgeListError, EdgeListProblem, StatementError
 from ..expressions import read_number
+from ..kinds import LoadKind, PairKind
 from ..model import (
-    DRIVER_KEYS,
-    LOAD_KINDS,
     Driver,
     Load,
     Mechanism,
     Pair,
     PointDef,
-    pair_from_tokens,
-    validated,
+    make_driver,
+    make_load,
+    make_pair,
+    make_point,
 )
 from ..utils import paused_gc
+from ..validation import (
+    check_driver_option,
+    check_pair_links,
+    check_pair_option,
+    pair_kind,
+    validated,
+)
 from .jsonformat import mechanism_from_json
 
-__all__ = ["pair_tokens", "parse_edgelist", "read_edgelist", "write_edgelist"]
+__all__ = [
+    "pair_from_tokens",
+    "pair_tokens",
+    "parse_edgelist",
+    "read_edgelist",
+    "write_edgelist",
+]
 
-_KEYWORDS = ("name", "ground", "driver", "point", *LOAD_KINDS)
+#: the words that start a statement other than a pair (``name`` starts a title)
+_STATEMENTS = frozenset(("ground", "driver", "point", *(k.value for k in LoadKind)))
+_PAIR_LETTERS = frozenset(k.value for k in PairKind)
 
 
 def _number(text: str) -> float:
@@ -78,183 +106,273 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         a pair from a link to itself, duplicate points, a compound hinge with
         a cycle, a link or driver not joined to the ground, an empty file.
     """
-    problems: list[EdgeListProblem] = []
-    loads: list[Load] = []
-    pairs: list[Pair] = []
-    drivers: list[Driver] = []
-    points: dict[str, PointDef] = {}
-    name = ""
-    ground: str | None = None
-    ground_line = 0
-
+    found = _Statements()
+    pairs = found.pairs
     for line_no, raw in enumerate(lines, start=1):
         text = raw.split("#", 1)[0]
         tokens = text.split()
         if not tokens:
             continue
         head = tokens[0]
-        # a statement word followed by a pair kind is a pair whose first link has that
-        # name (no statement has R, P or H third); a `name` line is always a title
-        if head == "name" or (
-            head in _KEYWORDS and not (len(tokens) >= 3 and tokens[2] in ("R", "P", "H"))
-        ):
+        try:
+            # a statement word followed by a pair kind is a pair whose first link has that
+            # name (no statement has R, P or H third); a `name` line is always a title
             if head == "name":
-                name = text.strip()[4:].strip()
-            elif head == "ground":
-                if len(tokens) != 2:
-                    problems.append(EdgeListProblem(line_no, raw, "expected 'ground LINK'"))
-                elif ground is not None:
-                    problems.append(
-                        EdgeListProblem(line_no, raw, f"ground already given on line {ground_line}")
-                    )
-                else:
-                    ground, ground_line = tokens[1], line_no
-            elif head == "driver":
-                driver, why = _driver(tokens, line_no)
-                if driver is None:
-                    problems.append(EdgeListProblem(line_no, raw, why))
-                else:
-                    drivers.append(driver)
-            elif head in LOAD_KINDS:
-                load, why = _load(tokens, line_no)
-                if load is None:
-                    problems.append(EdgeListProblem(line_no, raw, why))
-                else:
-                    loads.append(load)
+                found.name = text.strip()[4:].strip()
+            elif head not in _STATEMENTS or (len(tokens) >= 3 and tokens[2] in _PAIR_LETTERS):
+                pairs.append(_pair(tokens, len(pairs) + 1, line_no))
             else:
-                point, why = _point(tokens, line_no)
-                if point is None:
-                    problems.append(EdgeListProblem(line_no, raw, why))
-                elif point.name in points:
-                    first = points[point.name].line_no
-                    problems.append(
-                        EdgeListProblem(
-                            line_no, raw, f"point {point.name} already given on line {first}"
-                        )
-                    )
-                else:
-                    points[point.name] = point
-            continue
-        pair, why = pair_from_tokens(tokens, len(pairs) + 1, line_no)
-        if pair is None:
-            problems.append(EdgeListProblem(line_no, raw, why))
-        else:
-            pairs.append(pair)
-    if problems:
-        raise EdgeListError(source, problems)
+                found.read_statement(tokens, line_no)
+        except StatementError as exc:
+            found.problems.append(EdgeListProblem(line_no, raw, exc.reason))
+    if found.problems:
+        raise EdgeListError(source, found.problems)
     mechanism = Mechanism(
         tuple(pairs),
-        ground if ground is not None else "0",
-        tuple(drivers),
-        points,
-        name,
+        found.ground if found.ground is not None else "0",
+        tuple(found.drivers),
+        found.points,
+        found.name,
         source,
-        tuple(loads),
+        tuple(found.loads),
     )
-    return validated(mechanism, ground_line=ground_line)
+    return validated(mechanism, ground_line=found.ground_line)
 
 
-_LOAD_USAGE = {
-    "force": "force LINK POINT fx fy",
-    "moment": "moment LINK M",
-    "mass": "mass LINK m J S",
-    "gravity": "gravity gx gy",
-    "balance": "balance LINK POINT angle=DEG",
+@dataclass
+class _Statements:
+    """The statements of one description, gathered line by line, and its problems."""
+
+    name: str = ""
+    ground: str | None = None
+    ground_line: int = 0
+    pairs: list[Pair] = field(default_factory=list)
+    drivers: list[Driver] = field(default_factory=list)
+    points: dict[str, PointDef] = field(default_factory=dict)
+    loads: list[Load] = field(default_factory=list)
+    problems: list[EdgeListProblem] = field(default_factory=list)
+
+    def read_statement(self, tokens: list[str], line_no: int) -> None:
+        """Read a ``ground``, ``driver``, ``point`` or load line; raise StatementError if bad."""
+        head = tokens[0]
+        if head == "ground":
+            self._read_ground(tokens, line_no)
+        elif head == "driver":
+            self.drivers.append(_driver(tokens, line_no))
+        elif head == "point":
+            self._add_point(_point(tokens, line_no))
+        else:
+            self.loads.append(_load(tokens, line_no))
+
+    def _read_ground(self, tokens: list[str], line_no: int) -> None:
+        if len(tokens) != 2:
+            raise StatementError("expected 'ground LINK'")
+        if self.ground is not None:
+            raise StatementError(f"ground already given on line {self.ground_line}")
+        self.ground, self.ground_line = tokens[1], line_no
+
+    def _add_point(self, point: PointDef) -> None:
+        if point.name in self.points:
+            first = self.points[point.name].line_no
+            raise StatementError(f"point {point.name} already given on line {first}")
+        self.points[point.name] = point
+
+
+# ----------------------------------------------------------------------------- pairs
+def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pair | None, str]:
+    """Read ``a b KIND [POINT] [key=value ...]`` into a Pair, or say what is wrong.
+
+    Returns ``(pair, "")`` or ``(None, reason)``; never raises on bad tokens.
+
+    >>> pair_from_tokens("3 0 P C angle=90".split(), 1, 5)[0].angle
+    1.5707963267948966
+    >>> pair_from_tokens("1 2 Q".split(), 1, 5)[1]
+    "unknown pair kind 'Q' (use R, P or H)"
+    """
+    try:
+        return _pair(tokens, pair_id, line_no), ""
+    except StatementError as exc:
+        return None, exc.reason
+
+
+def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
+    """The grammar of a pair line; the checks of its content are :func:`make_pair`'s."""
+    if len(tokens) < 3:
+        raise StatementError("a pair needs at least 'a b KIND'")
+    a, b = tokens[0], tokens[1]
+    kind = pair_kind(tokens[2])
+    rest = tokens[3:]
+    gear = kind is PairKind.H and "gear" in rest
+    if gear:
+        rest = [t for t in rest if t != "gear"]
+    point = None
+    if rest and "=" not in rest[0]:
+        point, rest = rest[0], rest[1:]
+    options: dict[str, str] = {}
+    for tok in rest:
+        key, eq, value = tok.partition("=")
+        if not eq or not key or not value:
+            reason = f"unexpected token {tok!r} (options are key=value)"
+            raise _grammar_problem(kind, a, b, options, reason)
+        if key in options:
+            raise _grammar_problem(kind, a, b, options, f"option {key!r} given twice")
+        options[key] = value
+    if not options:
+        return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no)
+    typed = {key: _OPTION_READERS.get(key, str)(text) for key, text in options.items()}
+    return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no, **typed)
+
+
+def _grammar_problem(
+    kind: PairKind, a: str, b: str, earlier: Iterable[str], reason: str
+) -> StatementError:
+    """The problem of a pair line whose grammar fails at some token.
+
+    The model's checks of what comes before that token (the links, the keys
+    of the earlier options) are reported first, as the line is read from the
+    left: their problem, if any, is raised here; else ``reason`` is returned.
+    """
+    check_pair_links(a, b)
+    for key in earlier:
+        check_pair_option(kind, key)
+    return StatementError(reason)
+
+
+def _option_number(text: str) -> float:
+    """The number an option's text says, or NaN when it says none.
+
+    :func:`make_pair` refuses NaN with the option's own reason, the same as
+    for a number out of its range.
+    """
+    try:
+        return float(text)
+    except ValueError:
+        return math.nan
+
+
+def _option_names(text: str) -> tuple[str | None, ...]:
+    """``O1,O2`` as names, an empty one as None."""
+    return tuple(part or None for part in text.split(","))
+
+
+def _tooth_number(text: str) -> int | str | None:
+    """A tooth number: a positive integer, or ``?`` (unknown, None); other text stays text."""
+    if text == "?":
+        return None
+    if text.isdigit():
+        try:
+            return int(text)
+        except ValueError:  # a digit that is no decimal digit (²)
+            return text
+    return text
+
+
+def _tooth_numbers(text: str) -> tuple[int | str | None, ...]:
+    return tuple(_tooth_number(part) for part in text.split(","))
+
+
+_OPTION_READERS: dict[str, Any] = {
+    "angle": _option_number,
+    "normal": _option_number,
+    "span": _option_number,
+    "friction": _option_number,
+    "circle": _option_number,
+    "module": _option_number,
+    "centers": _option_names,
+    "z": _tooth_numbers,
 }
 
 
-def _written(exact: list[str | None]) -> tuple[str | None, ...]:
-    return tuple(exact) if any(exact) else ()
+# ------------------------------------------------------------------ loads, drivers, points
+#: where each load's link, point and numbers stand on its line (token positions)
+_LOAD_LAYOUT: dict[LoadKind, tuple[int, int | None, int | None, tuple[int, ...]]] = {
+    # kind: (tokens, link, point, numbers)
+    LoadKind.FORCE: (5, 1, 2, (3, 4)),
+    LoadKind.MOMENT: (3, 1, None, (2,)),
+    LoadKind.MASS: (5, 1, 4, (2, 3)),
+    LoadKind.GRAVITY: (3, None, None, (1, 2)),
+    LoadKind.BALANCE: (4, 1, 2, (3,)),
+}
 
 
-def _load(tokens: list[str], line_no: int) -> tuple[Load | None, str]:
-    kind = tokens[0]
-    usage = f"expected '{_LOAD_USAGE[kind]}'"
-    exact: list[str | None] = []
-
-    def value(token: str) -> float:
-        try:
-            number = _number(token)
-        except ValueError:
-            number, _ = read_number(token)
-            exact.append(token)
-            return number
-        exact.append(None)
-        return number
-
-    try:
-        if kind == "gravity":
-            if len(tokens) != 3:
-                return None, usage
-            values = (value(tokens[1]), value(tokens[2]))
-            return Load(kind, "", None, values, line_no, _written(exact)), ""
-        if kind == "moment":
-            if len(tokens) != 3:
-                return None, usage
-            return Load(kind, tokens[1], None, (value(tokens[2]),), line_no, _written(exact)), ""
-        if kind == "force":
-            if len(tokens) != 5:
-                return None, usage
-            values = (value(tokens[3]), value(tokens[4]))
-            return Load(kind, tokens[1], tokens[2], values, line_no, _written(exact)), ""
-        if kind == "mass":
-            if len(tokens) != 5:
-                return None, usage
-            m, inertia = value(tokens[2]), value(tokens[3])
-            if m < 0 or inertia < 0:
-                return None, "mass and moment of inertia cannot be negative"
-            return Load(kind, tokens[1], tokens[4], (m, inertia), line_no, _written(exact)), ""
-        key, eq, text = tokens[3].partition("=") if len(tokens) == 4 else ("", "", "")
+def _load(tokens: list[str], line_no: int) -> Load:
+    kind = LoadKind(tokens[0])
+    usage = f"expected '{kind.usage}'"
+    size, link_at, point_at, numbers_at = _LOAD_LAYOUT[kind]
+    if len(tokens) != size:
+        raise StatementError(usage)
+    texts = [tokens[k] for k in numbers_at]
+    if kind is LoadKind.BALANCE:
+        key, eq, texts[0] = texts[0].partition("=")
         if key != "angle" or not eq:
-            return None, usage
-        return Load(kind, tokens[1], tokens[2], (value(text),), line_no, _written(exact)), ""
+            raise StatementError(usage)
+    values: list[float] = []
+    exact: list[str | None] = []
+    for text in texts:
+        try:
+            value, written = _number_or_expression(text)
+        except ValueError:
+            raise StatementError(
+                f"{usage}: numbers must be finite (or exact expressions like 500*sqrt(2))"
+            ) from None
+        values.append(value)
+        exact.append(written)
+    link = "" if link_at is None else tokens[link_at]
+    point = None if point_at is None else tokens[point_at]
+    written = tuple(exact) if any(exact) else ()
+    return make_load(kind, link, point, values, line_no=line_no, exact=written)
+
+
+def _number_or_expression(text: str) -> tuple[float, str | None]:
+    """A finite decimal (no text kept), or an exact expression (kept as written)."""
+    try:
+        return _number(text), None
     except ValueError:
-        return None, f"{usage}: numbers must be finite (or exact expressions like 500*sqrt(2))"
+        value, _ = read_number(text)
+        return value, text
 
 
-def _driver(tokens: list[str], line_no: int) -> tuple[Driver | None, str]:
+def _driver(tokens: list[str], line_no: int) -> Driver:
     if len(tokens) < 2 or "=" in tokens[1]:
-        return None, "expected 'driver LINK [omega=.. epsilon=.. v=.. a=..]'"
+        raise StatementError("expected 'driver LINK [omega=.. epsilon=.. v=.. a=..]'")
     motion: list[tuple[str, float]] = []
     for tok in tokens[2:]:
         key, eq, value = tok.partition("=")
         if not eq:
-            return None, f"unexpected token {tok!r} (one driver per line; options are key=value)"
-        if key not in DRIVER_KEYS:
-            return None, f"unknown driver option {key!r} (use {', '.join(DRIVER_KEYS)})"
+            raise StatementError(
+                f"unexpected token {tok!r} (one driver per line; options are key=value)"
+            )
+        check_driver_option(key)
         try:
             motion.append((key, _number(value)))
         except ValueError:
-            return None, f"driver option {key} needs a finite number, not {value!r}"
-    return Driver(tokens[1], tuple(motion), line_no), ""
+            raise StatementError(
+                f"driver option {key} needs a finite number, not {value!r}"
+            ) from None
+    return make_driver(tokens[1], motion, line_no=line_no)
 
 
-def _point(tokens: list[str], line_no: int) -> tuple[PointDef | None, str]:
+def _point(tokens: list[str], line_no: int) -> PointDef:
     if len(tokens) not in (4, 5):
-        return None, "expected 'point NAME x y [on=LINK]'"
+        raise StatementError("expected 'point NAME x y [on=LINK]'")
     on = None
     if len(tokens) == 5:
         key, eq, value = tokens[4].partition("=")
         if key != "on" or not eq or not value:
-            return None, f"unexpected token {tokens[4]!r} (only on=LINK may follow x y)"
+            raise StatementError(f"unexpected token {tokens[4]!r} (only on=LINK may follow x y)")
         on = value
     values: list[float] = []
     exact: list[str | None] = []
     for token in tokens[2:4]:
         try:
-            values.append(_number(token))
-            exact.append(None)
+            value, written = _number_or_expression(token)
         except ValueError:
-            try:
-                value, _ = read_number(token)
-            except ValueError:
-                return None, (
-                    "point coordinates must be finite numbers (metres) or exact expressions "
-                    "such as 0.2*sqrt(3)"
-                )
-            values.append(value)
-            exact.append(token)
-    return PointDef(tokens[1], values[0], values[1], on, line_no, (exact[0], exact[1])), ""
+            value, written = math.nan, None  # make_point refuses it
+        values.append(value)
+        exact.append(written)
+    return make_point(
+        tokens[1], values[0], values[1], on, line_no=line_no, exact=(exact[0], exact[1])
+    )
 
 
 def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:

@@ -22,22 +22,25 @@ import json
 import math
 from typing import Any
 
-from ..errors import EdgeListError, EdgeListProblem
+from ..errors import EdgeListError, EdgeListProblem, StatementError
 from ..expressions import read_number
+from ..kinds import LoadKind
 from ..model import (
-    DRIVER_KEYS,
-    LOAD_KINDS,
     Driver,
     Load,
     Mechanism,
     Pair,
     PointDef,
-    pair_from_tokens,
-    validated,
+    make_driver,
+    make_load,
+    make_pair,
+    make_point,
 )
+from ..validation import DRIVER_KEYS, validated
 
 __all__ = ["mechanism_from_dict", "mechanism_from_json", "mechanism_to_dict", "mechanism_to_json"]
 
+_TOP_KEYS = ("name", "ground", "drivers", "pairs", "points", "loads")
 _PAIR_FIELDS = (
     "links",
     "kind",
@@ -55,6 +58,7 @@ _PAIR_FIELDS = (
     "internal",
     "module",
 )
+_LOAD_FIELDS = ("kind", "link", "point", "values")
 
 
 def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
@@ -119,192 +123,295 @@ def _text(value: Any) -> str:
     return str(value)
 
 
+class _Problems(list[EdgeListProblem]):
+    """The problems of one document, each under the JSON path it was found at."""
+
+    def add(self, where: str, reason: str) -> None:
+        self.append(EdgeListProblem(0, "", f"{where}: {reason}"))
+
+
 def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
     """Build a validated mechanism from the JSON-shaped dict.
 
     Link and point names are strings (integers are accepted and turned into
-    strings); numbers must be finite.
+    strings); numbers must be finite. Each statement is built by the same
+    functions as the edge list's (:func:`~structure.model.make_pair`, ...),
+    so it is refused for the same reasons.
+
+    Raises
+    ------
+    EdgeListError
+        Every problem of the document: unknown keys, values of the wrong
+        shape (each named by its path, ``pairs[2]``), statements the model
+        refuses, then any problem :func:`~structure.validation.validated` finds.
     """
-    problems: list[EdgeListProblem] = []
-
-    def bad(where: str, reason: str) -> None:
-        problems.append(EdgeListProblem(0, "", f"{where}: {reason}"))
-
     if not isinstance(data, dict):
         raise EdgeListError(source, [EdgeListProblem(0, "", "the top level must be an object")])
-    unknown = set(data) - {"name", "ground", "drivers", "pairs", "points", "loads"}
+    problems = _Problems()
+    unknown = set(data) - set(_TOP_KEYS)
     if unknown:
-        bad("top level", f"unknown keys {sorted(unknown)}")
+        problems.add("top level", f"unknown keys {sorted(unknown)}")
     name = data.get("name", "")
     if not isinstance(name, str):
-        bad("name", "must be a string")
+        problems.add("name", "must be a string")
         name = ""
     ground = data.get("ground", "0")
     if not _is_name(ground):
-        bad("ground", "must be a link name")
+        problems.add("ground", "must be a link name")
         ground = "0"
-    pairs: list[Pair] = []
-    raw_pairs = data.get("pairs", [])
-    if not isinstance(raw_pairs, list):
-        bad("pairs", "must be a list")
-        raw_pairs = []
-    for i, item in enumerate(raw_pairs):
-        where = f"pairs[{i}]"
-        if not isinstance(item, dict):
-            bad(where, "must be an object")
-            continue
-        extra = set(item) - set(_PAIR_FIELDS)
-        if extra:
-            bad(where, f"unknown keys {sorted(extra)}")
-            continue
-        links = item.get("links")
-        if not isinstance(links, list) or len(links) != 2 or not all(map(_is_name, links)):
-            bad(where, "'links' must be a list of two link names")
-            continue
-        kind = item.get("kind")
-        if not isinstance(kind, str):
-            bad(where, "'kind' must be one of R, P, H")
-            continue
-        tokens = [_text(links[0]), _text(links[1]), kind]
-        if item.get("point") is not None:
-            if not _is_name(item["point"]):
-                bad(where, "'point' must be a point name")
-                continue
-            tokens.append(_text(item["point"]))
-        shape_ok = True
-        for key in ("angle", "normal", "span", "friction", "circle"):
-            if item.get(key) is not None:
-                if not _is_number(item[key]):
-                    bad(where, f"'{key}' must be a finite number of degrees")
-                    shape_ok = False
-                else:
-                    tokens.append(f"{key}={item[key]!r}")
-        for key in ("flat", "roller"):
-            if item.get(key) is not None:
-                if not _is_name(item[key]):
-                    bad(where, f"'{key}' must be a link name")
-                    shape_ok = False
-                else:
-                    tokens.append(f"{key}={_text(item[key])}")
-        if item.get("centers") is not None:
-            c = item["centers"]
-            if (
-                not isinstance(c, list)
-                or len(c) != 2
-                or not all(v is None or _is_name(v) for v in c)
-            ):
-                bad(where, "'centers' must be a list of two point names (or null)")
-                shape_ok = False
-            else:
-                tokens.append("centers=" + ",".join("" if v is None else _text(v) for v in c))
-        if item.get("gear"):
-            tokens.append("gear")
-        if item.get("z") is not None:
-            z = item["z"]
-            if not isinstance(z, list) or len(z) != 2:
-                bad(where, "'z' must be [za, zb] (integers or '?')")
-                continue
-            tokens.append("z=" + ",".join(str(t) for t in z))
-        for key in ("internal", "module"):
-            if item.get(key) is not None:
-                tokens.append(f"{key}={_text(item[key])}")
-        if not shape_ok:
-            continue
-        pair, why = pair_from_tokens(tokens, len(pairs) + 1, 0)
-        if pair is None:
-            bad(where, why)
-        else:
-            pairs.append(pair)
-    drivers: list[Driver] = []
-    raw_drivers = data.get("drivers", [])
-    if not isinstance(raw_drivers, list):
-        bad("drivers", "must be a list of link names or objects with 'link'")
-        raw_drivers = []
-    for i, item in enumerate(raw_drivers):
-        where = f"drivers[{i}]"
-        if _is_name(item):
-            drivers.append(Driver(_text(item)))
-        elif isinstance(item, dict) and _is_name(item.get("link")):
-            motion = []
-            for key, value in item.items():
-                if key == "link":
-                    continue
-                if key not in DRIVER_KEYS:
-                    bad(where, f"unknown option {key!r} (use {', '.join(DRIVER_KEYS)})")
-                elif not _is_number(value):
-                    bad(where, f"option {key!r} must be a finite number")
-                else:
-                    motion.append((key, float(value)))
-            drivers.append(Driver(_text(item["link"]), tuple(motion)))
-        else:
-            bad(where, "must be a link name or an object with 'link'")
-    points: dict[str, PointDef] = {}
-    raw_points = data.get("points", {})
-    if not isinstance(raw_points, dict):
-        bad("points", "must be an object NAME: [x, y]")
-        raw_points = {}
-    for key, value in raw_points.items():
-        where = f"points[{key!r}]"
-        on = None
-        if isinstance(value, dict):
-            extra = set(value) - {"xy", "on"}
-            if extra:
-                bad(where, f"unknown keys {sorted(extra)}")
-                continue
-            on = value.get("on")
-            if on is not None and not _is_name(on):
-                bad(where, "'on' must be a link name")
-                continue
-            on = None if on is None else _text(on)
-            value = value.get("xy")
-        if not isinstance(value, list) or len(value) != 2:
-            bad(where, "must be [x, y] with finite numbers")
-            continue
-        coords, exact = _numbers(value)
-        if len(coords) != 2:
-            bad(where, "must be [x, y] with finite numbers or exact expressions like '0.2*sqrt(3)'")
-            continue
-        points[str(key)] = PointDef(str(key), coords[0], coords[1], on, 0, (exact[0], exact[1]))
-    loads: list[Load] = []
-    raw_loads = data.get("loads", [])
-    if not isinstance(raw_loads, list):
-        bad("loads", "must be a list")
-        raw_loads = []
-    for i, item in enumerate(raw_loads):
-        where = f"loads[{i}]"
-        if not isinstance(item, dict) or item.get("kind") not in LOAD_KINDS:
-            bad(where, f"must be an object with kind one of {', '.join(LOAD_KINDS)}")
-            continue
-        kind = item["kind"]
-        point_role, _ = LOAD_KINDS[kind]
-        values = item.get("values", [])
-        link = item.get("link", "")
-        point = item.get("point")
-        numbers, written = _numbers(values if isinstance(values, list) else [None])
-        if (
-            not isinstance(values, list)
-            or len(numbers) != len(values)
-            or (kind != "gravity" and not _is_name(link))
-            or (point_role and not _is_name(point))
-        ):
-            bad(where, "needs 'link', 'point' (force, mass, balance) and finite 'values'")
-            continue
-        loads.append(
-            Load(
-                kind,
-                _text(link) if kind != "gravity" else "",
-                _text(point) if point_role else None,
-                tuple(numbers),
-                0,
-                tuple(written) if any(written) else (),
-            )
-        )
+    pairs = _read_pairs(data.get("pairs", []), problems)
+    drivers = _read_drivers(data.get("drivers", []), problems)
+    points = _read_points(data.get("points", {}), problems)
+    loads = _read_loads(data.get("loads", []), problems)
     if problems:
         raise EdgeListError(source, problems)
     mechanism = Mechanism(
         tuple(pairs), _text(ground), tuple(drivers), points, name, source, tuple(loads)
     )
     return validated(mechanism)
+
+
+# ----------------------------------------------------------------------------- pairs
+def _read_pairs(raw: Any, problems: _Problems) -> list[Pair]:
+    if not isinstance(raw, list):
+        problems.add("pairs", "must be a list")
+        return []
+    pairs: list[Pair] = []
+    for i, item in enumerate(raw):
+        pair = _read_pair(item, len(pairs) + 1, f"pairs[{i}]", problems)
+        if pair is not None:
+            pairs.append(pair)
+    return pairs
+
+
+def _read_pair(item: Any, pair_id: int, where: str, problems: _Problems) -> Pair | None:
+    """One pair object, or None (its problems added)."""
+    if not isinstance(item, dict):
+        problems.add(where, "must be an object")
+        return None
+    extra = set(item) - set(_PAIR_FIELDS)
+    if extra:
+        problems.add(where, f"unknown keys {sorted(extra)}")
+        return None
+    links = item.get("links")
+    if not isinstance(links, list) or len(links) != 2 or not all(map(_is_name, links)):
+        problems.add(where, "'links' must be a list of two link names")
+        return None
+    kind = item.get("kind")
+    if not isinstance(kind, str):
+        problems.add(where, "'kind' must be one of R, P, H")
+        return None
+    point = item.get("point")
+    if point is not None:
+        if not _is_name(point):
+            problems.add(where, "'point' must be a point name")
+            return None
+        point = _text(point)
+    found = len(problems)
+    options = _pair_options(item, where, problems)
+    if len(problems) > found:
+        return None
+    try:
+        return make_pair(
+            pair_id,
+            kind,
+            _text(links[0]),
+            _text(links[1]),
+            point,
+            gear=bool(item.get("gear")),
+            **options,
+        )
+    except StatementError as exc:
+        problems.add(where, exc.reason)
+        return None
+
+
+def _pair_options(item: dict[str, Any], where: str, problems: _Problems) -> dict[str, Any]:
+    """The options of a pair object as typed values, in the order the model checks them.
+
+    Values of the wrong shape are added to ``problems``; their ranges are
+    the model's to check.
+    """
+    options: dict[str, Any] = {}
+    for key in ("angle", "normal", "span", "friction", "circle"):
+        if item.get(key) is not None:
+            if _is_number(item[key]):
+                options[key] = item[key]
+            else:
+                problems.add(where, f"'{key}' must be a finite number of degrees")
+    for key in ("flat", "roller"):
+        if item.get(key) is not None:
+            if _is_name(item[key]):
+                options[key] = _text(item[key])
+            else:
+                problems.add(where, f"'{key}' must be a link name")
+    centers = item.get("centers")
+    if centers is not None:
+        if (
+            not isinstance(centers, list)
+            or len(centers) != 2
+            or not all(v is None or _is_name(v) for v in centers)
+        ):
+            problems.add(where, "'centers' must be a list of two point names (or null)")
+        else:
+            options["centers"] = tuple(None if v is None else _text(v) for v in centers)
+    teeth = item.get("z")
+    if teeth is not None:
+        if not isinstance(teeth, list) or len(teeth) != 2:
+            problems.add(where, "'z' must be [za, zb] (integers or '?')")
+            return options
+        options["z"] = tuple(_tooth_number(t) for t in teeth)
+    if item.get("internal") is not None:
+        options["internal"] = _text(item["internal"])
+    if item.get("module") is not None:
+        options["module"] = _module(item["module"])
+    return options
+
+
+def _tooth_number(value: Any) -> Any:
+    """A tooth number as the model takes it: ``"?"`` is None; digits (even as text) an int."""
+    text = str(value)
+    if text == "?":
+        return None
+    if text.isdigit():
+        try:
+            return int(text)
+        except ValueError:  # a digit that is no decimal digit (²)
+            return value
+    return value
+
+
+def _module(value: Any) -> Any:
+    """A gear module; a string holding a number is read as that number, as it always was."""
+    if isinstance(value, str):
+        try:
+            return float(value)
+        except ValueError:
+            return value
+    return value
+
+
+# ------------------------------------------------------------------ drivers, points, loads
+def _read_drivers(raw: Any, problems: _Problems) -> list[Driver]:
+    if not isinstance(raw, list):
+        problems.add("drivers", "must be a list of link names or objects with 'link'")
+        return []
+    drivers: list[Driver] = []
+    for i, item in enumerate(raw):
+        where = f"drivers[{i}]"
+        if _is_name(item):
+            drivers.append(make_driver(_text(item)))
+        elif isinstance(item, dict) and _is_name(item.get("link")):
+            drivers.append(_read_driver(item, where, problems))
+        else:
+            problems.add(where, "must be a link name or an object with 'link'")
+    return drivers
+
+
+def _read_driver(item: dict[str, Any], where: str, problems: _Problems) -> Driver:
+    motion: list[tuple[str, float]] = []
+    for key, value in item.items():
+        if key == "link":
+            continue
+        if key not in DRIVER_KEYS:
+            problems.add(where, f"unknown option {key!r} (use {', '.join(DRIVER_KEYS)})")
+        elif not _is_number(value):
+            problems.add(where, f"option {key!r} must be a finite number")
+        else:
+            motion.append((key, value))
+    return make_driver(_text(item["link"]), motion)
+
+
+def _read_points(raw: Any, problems: _Problems) -> dict[str, PointDef]:
+    if not isinstance(raw, dict):
+        problems.add("points", "must be an object NAME: [x, y]")
+        return {}
+    points: dict[str, PointDef] = {}
+    for key, value in raw.items():
+        point = _read_point(str(key), value, f"points[{key!r}]", problems)
+        if point is not None:
+            points[point.name] = point
+    return points
+
+
+def _read_point(name: str, value: Any, where: str, problems: _Problems) -> PointDef | None:
+    on = None
+    if isinstance(value, dict):
+        extra = set(value) - {"xy", "on"}
+        if extra:
+            problems.add(where, f"unknown keys {sorted(extra)}")
+            return None
+        on = value.get("on")
+        if on is not None and not _is_name(on):
+            problems.add(where, "'on' must be a link name")
+            return None
+        on = None if on is None else _text(on)
+        value = value.get("xy")
+    if not isinstance(value, list) or len(value) != 2:
+        problems.add(where, "must be [x, y] with finite numbers")
+        return None
+    coords, exact = _numbers(value)
+    if len(coords) != 2:
+        problems.add(
+            where, "must be [x, y] with finite numbers or exact expressions like '0.2*sqrt(3)'"
+        )
+        return None
+    try:
+        return make_point(name, coords[0], coords[1], on, exact=(exact[0], exact[1]))
+    except StatementError as exc:
+        problems.add(where, exc.reason)
+        return None
+
+
+def _read_loads(raw: Any, problems: _Problems) -> list[Load]:
+    if not isinstance(raw, list):
+        problems.add("loads", "must be a list")
+        return []
+    loads: list[Load] = []
+    for i, item in enumerate(raw):
+        load = _read_load(item, f"loads[{i}]", problems)
+        if load is not None:
+            loads.append(load)
+    return loads
+
+
+def _read_load(item: Any, where: str, problems: _Problems) -> Load | None:
+    kind = item.get("kind") if isinstance(item, dict) else None
+    if not isinstance(kind, str) or kind not in _LOAD_WORDS:
+        words = ", ".join(k.value for k in LoadKind)
+        problems.add(where, f"must be an object with kind one of {words}")
+        return None
+    kind = LoadKind(kind)
+    extra = set(item) - set(_LOAD_FIELDS)
+    if extra:
+        problems.add(where, f"unknown keys {sorted(extra)}")
+        return None
+    values = item.get("values", [])
+    link = item.get("link", "")
+    point = item.get("point")
+    numbers, written = _numbers(values if isinstance(values, list) else [None])
+    if (
+        not isinstance(values, list)
+        or len(numbers) != len(values)
+        or (kind.takes_link and not _is_name(link))
+        or (kind.takes_point and not _is_name(point))
+    ):
+        problems.add(where, "needs 'link', 'point' (force, mass, balance) and finite 'values'")
+        return None
+    try:
+        return make_load(
+            kind,
+            _text(link) if link not in (None, "") else "",
+            None if point is None else _text(point),
+            numbers,
+            exact=tuple(written) if any(written) else (),
+        )
+    except StatementError as exc:
+        problems.add(where, exc.reason)
+        return None
+
+
+_LOAD_WORDS = frozenset(k.value for k in LoadKind)
 
 
 def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
@@ -346,7 +453,7 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
     if mechanism.loads:
         out["loads"] = [
             {
-                "kind": x.kind,
+                "kind": x.kind.value,
                 "link": x.link,
                 "point": x.point,
                 "values": [

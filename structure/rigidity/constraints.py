@@ -35,7 +35,8 @@ from enum import Enum
 import numpy as np
 
 from ..errors import EdgeListError, EdgeListProblem
-from ..model import Mechanism, PairKind
+from ..kinds import PairKind
+from ..model import Hinge, Mechanism
 
 __all__ = [
     "ConstraintSystem",
@@ -134,88 +135,102 @@ class ConstraintSystem:
 def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> ConstraintSystem:
     """Build the constraint system of ``mechanism`` with driver rows for ``drivers``.
 
-    >>> from structure.model import Mechanism
+    >>> from structure import Mechanism
     >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "3", "R"),
     ...                           ("3", "0", "R")])
     >>> s = constraint_system(m, ["1"])
     >>> s.n_scalar_unknowns, sum(s.row_size)
     (9, 9)
     """
-    ground = mechanism.ground
-    unknowns: list[Unknown] = []
-    pos: dict[str, int] = {}
-    ang: dict[str, int] = {}
-    pin: dict[str, int] = {}
-    for link in mechanism.moving_links:
-        pos[link] = len(unknowns)
-        unknowns.append(Unknown("pos", link, 2))
-        ang[link] = len(unknowns)
-        unknowns.append(Unknown("ang", link, 1))
-
-    kinds: list[RowKind] = []
-    sizes: list[int] = []
-    adjs: list[tuple[int, ...]] = []
-    pair_of: list[int] = []
-    link_of: list[str] = []
-
-    def add(kind: RowKind, size: int, adj: tuple[int, ...], pair_id: int, link: str = "") -> None:
-        kinds.append(kind)
-        sizes.append(size)
-        # newest unknowns first: the matching then stays local to the group being added
-        adjs.append(tuple(sorted(adj, reverse=True)))
-        pair_of.append(pair_id)
-        link_of.append(link)
-
-    def body(link: str) -> tuple[int, ...]:
-        return () if link == ground else (pos[link], ang[link])
-
+    rows = _Rows(mechanism)
     compound = dict(mechanism.compound_hinges)  # a plain dict: looked up once per pair
     done_points: set[str] = set()
+    body = rows.body
     for p in mechanism.pairs:
         if p.kind is _R:
             h = compound.get(p.point) if p.point is not None else None
             if h is None:
-                add(_HINGE, 2, body(p.b) + body(p.a), p.id)
-                continue
-            if h.point in done_points:
-                continue
-            done_points.add(h.point)
-            first_pair = {}
-            for pid in h.pairs:
-                for link in mechanism.pair(pid).links:
-                    first_pair.setdefault(link, pid)
-            if ground in h.links:
-                for link in h.links:
-                    if link != ground:
-                        add(_PIN, 2, body(link), first_pair[link], link)
-            else:
-                pin[h.point] = len(unknowns)
-                unknowns.append(Unknown("pin", h.point, 2))
-                for link in h.links:
-                    add(_PIN, 2, (pin[h.point], *body(link)), first_pair[link], link)
+                rows.add(_HINGE, 2, body(p.b) + body(p.a), p.id)
+            elif h.point not in done_points:
+                done_points.add(h.point)
+                rows.add_compound_hinge(h)
         elif p.kind is _P:
-            angles = tuple(ang[x] for x in (p.b, p.a) if x != ground)
-            add(_SLIDE_ANGLE, 1, angles, p.id)
-            add(_SLIDE, 1, body(p.b) + body(p.a), p.id)
+            angles = tuple(rows.ang[x] for x in (p.b, p.a) if x != rows.ground)
+            rows.add(_SLIDE_ANGLE, 1, angles, p.id)
+            rows.add(_SLIDE, 1, body(p.b) + body(p.a), p.id)
         else:
-            add(_CONTACT, 1, body(p.b) + body(p.a), p.id)
-    n_pair_rows = len(kinds)
-    system = ConstraintSystem(
-        mechanism,
-        tuple(unknowns),
-        tuple(kinds),
-        tuple(sizes),
-        tuple(adjs),
-        tuple(pair_of),
-        tuple(link_of),
-        pos,
-        ang,
-        pin,
-        n_pair_rows,
-    )
+            rows.add(_CONTACT, 1, body(p.b) + body(p.a), p.id)
+    system = rows.system()
     if not drivers:
         return system
     return system.with_rows(*zip(*(_driver_row(system, d) for d in drivers), strict=True))
+
+
+class _Rows:
+    """The unknowns and the pair rows of a constraint system, while it is being built."""
+
+    def __init__(self, mechanism: Mechanism) -> None:
+        self.mechanism = mechanism
+        self.ground = mechanism.ground
+        self.unknowns: list[Unknown] = []
+        self.pos: dict[str, int] = {}
+        self.ang: dict[str, int] = {}
+        self.pin: dict[str, int] = {}
+        for link in mechanism.moving_links:
+            self.pos[link] = len(self.unknowns)
+            self.unknowns.append(Unknown("pos", link, 2))
+            self.ang[link] = len(self.unknowns)
+            self.unknowns.append(Unknown("ang", link, 1))
+        self.kinds: list[RowKind] = []
+        self.sizes: list[int] = []
+        self.adjs: list[tuple[int, ...]] = []
+        self.pair_of: list[int] = []
+        self.link_of: list[str] = []
+
+    def body(self, link: str) -> tuple[int, ...]:
+        """The unknowns of a link's placement (none for the ground)."""
+        return () if link == self.ground else (self.pos[link], self.ang[link])
+
+    def add(
+        self, kind: RowKind, size: int, adj: tuple[int, ...], pair_id: int, link: str = ""
+    ) -> None:
+        self.kinds.append(kind)
+        self.sizes.append(size)
+        # newest unknowns first: the matching then stays local to the group being added
+        self.adjs.append(tuple(sorted(adj, reverse=True)))
+        self.pair_of.append(pair_id)
+        self.link_of.append(link)
+
+    def add_compound_hinge(self, h: Hinge) -> None:
+        """Two rows per link at the pin; the pin is an unknown unless the ground is there."""
+        first_pair: dict[str, int] = {}
+        for pid in h.pairs:
+            for link in self.mechanism.pair(pid).links:
+                first_pair.setdefault(link, pid)
+        if self.ground in h.links:
+            for link in h.links:
+                if link != self.ground:
+                    self.add(_PIN, 2, self.body(link), first_pair[link], link)
+            return
+        pin = self.pin[h.point] = len(self.unknowns)
+        self.unknowns.append(Unknown("pin", h.point, 2))
+        for link in h.links:
+            self.add(_PIN, 2, (pin, *self.body(link)), first_pair[link], link)
+
+    def system(self) -> ConstraintSystem:
+        return ConstraintSystem(
+            self.mechanism,
+            tuple(self.unknowns),
+            tuple(self.kinds),
+            tuple(self.sizes),
+            tuple(self.adjs),
+            tuple(self.pair_of),
+            tuple(self.link_of),
+            self.pos,
+            self.ang,
+            self.pin,
+            len(self.kinds),
+        )
 
 
 def _driver_row(system: ConstraintSystem, link: str) -> tuple[RowKind, int, tuple[int, ...], str]:
@@ -528,7 +543,7 @@ def jacobian(
 ) -> np.ndarray:
     """Dense Jacobian of the row blocks ``rows`` (default all), scalar columns.
 
-    >>> from structure.model import Mechanism
+    >>> from structure import Mechanism
     >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "0", "R")])
     >>> s = constraint_system(m)
     >>> J = jacobian(s, random_realization(s))

@@ -165,35 +165,42 @@ def irreducible_blocks(
     the digraph (``adj[v]`` lists the successors of ``v``) and ``assigned``
     is ignored: plain strongly connected components, sources first.
     """
-    succ: Sequence[Sequence[int]]
-    if as_successors:
-        succ = adj
-    else:
-        built: list[list[int]] = [[] for _ in range(n_unknowns)]
-        for r, units in enumerate(assigned):
-            if not units:
-                continue
-            a = adj[r]
-            first = units[0]
-            if len(units) == 1 or all(u == first for u in units):
-                for w in a:
-                    if w != first:
-                        built[w].append(first)
-                continue
-            for u in set(units):
-                for w in a:
-                    if w != u:
-                        built[w].append(u)
-        succ = built
-    # iterative Tarjan; components come out sinks first
-    index = [-1] * n_unknowns
-    low = [0] * n_unknowns
-    ptr = [0] * n_unknowns
-    on_stack = [False] * n_unknowns
+    succ = adj if as_successors else _dependency_digraph(adj, assigned, n_unknowns)
+    return _strongly_connected(succ, n_unknowns)
+
+
+def _dependency_digraph(
+    adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]], n_unknowns: int
+) -> list[list[int]]:
+    """Successors of each unknown: ``w -> u`` when a row matched to ``u`` also touches ``w``."""
+    succ: list[list[int]] = [[] for _ in range(n_unknowns)]
+    for r, units in enumerate(assigned):
+        if not units:
+            continue
+        a = adj[r]
+        first = units[0]
+        if len(units) == 1 or all(u == first for u in units):
+            for w in a:
+                if w != first:
+                    succ[w].append(first)
+            continue
+        for u in set(units):
+            for w in a:
+                if w != u:
+                    succ[w].append(u)
+    return succ
+
+
+def _strongly_connected(succ: Sequence[Sequence[int]], n_nodes: int) -> list[list[int]]:
+    """Strongly connected components, sources first (Tarjan, iterative); each one sorted."""
+    index = [-1] * n_nodes
+    low = [0] * n_nodes
+    ptr = [0] * n_nodes
+    on_stack = [False] * n_nodes
     stack: list[int] = []
     comps: list[list[int]] = []
     counter = 0
-    for root in range(n_unknowns):
+    for root in range(n_nodes):
         if index[root] != -1:
             continue
         index[root] = low[root] = counter
@@ -231,5 +238,6 @@ def irreducible_blocks(
                     if w == v:
                         break
                 comps.append(sorted(comp))
+    # Tarjan finds sinks first
     comps.reverse()
     return comps

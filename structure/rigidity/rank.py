@@ -127,85 +127,33 @@ def _singular_blocks(
     """Indices of the irreducible blocks whose square Jacobian is numerically singular.
 
     Blocks of equal size are stacked and their singular values computed in
-    one batched call.
+    one batched call. Generic regularity depends only on a block's pattern,
+    so when all blocks are checked (``which`` None) each pattern is evaluated
+    once: mechanisms repeat a few group shapes many times.
     """
     offsets, _ = system.scalar_offsets()
     uo = offsets.tolist()
-    block_of = [0] * len(system.unknowns)
-    for b, units in enumerate(blocks):
-        for u in units:
-            block_of[u] = b
-    rows_of: list[list[int]] = [[] for _ in blocks]
-    for r, units in enumerate(assigned):
-        if units:
-            rows_of[block_of[units[0]]].append(r)
+    rows_of = _rows_of_blocks(system, blocks, assigned)
     trivial = (RowKind.DRIVER, RowKind.PROBE)
-    # generic regularity depends only on a block's pattern, so each pattern is
-    # evaluated once (mechanisms repeat a few group shapes many times)
     representative: dict[tuple, int] = {}
     same_as: dict[int, int] = {}
     by_size: dict[int, list[tuple[int, np.ndarray]]] = {}
     bad: list[int] = []
-    row_kind, row_adj, row_pair, row_size = (
-        system.row_kind,
-        system.row_adj,
-        system.row_pair,
-        system.row_size,
-    )
-    pin_kind = RowKind.PIN
     for b in range(len(blocks)) if which is None else which:
         units = blocks[b]
         rows = rows_of[b]
-        if len(units) == 1 and len(rows) == 1 and row_kind[rows[0]] in trivial:
+        if len(units) == 1 and len(rows) == 1 and system.row_kind[rows[0]] in trivial:
             continue  # a single driver/probe row on one block is regular by construction
         if which is None:
-            local = {u: i for i, u in enumerate(units)}
-            shared: dict[tuple[int, int], int] = {}
-            pattern = tuple(
-                (
-                    row_kind[r],
-                    len(assigned[r]),
-                    tuple(local.get(u, -1) for u in row_adj[r]),
-                    # rows that share a point (one pin, one P pair) share it in the pattern
-                    shared.setdefault(
-                        (0, system.mechanism.pair(row_pair[r]).point)
-                        if row_kind[r] is pin_kind
-                        else (1, row_pair[r]),
-                        len(shared),
-                    ),
-                )
-                for r in rows
-            )
-            key = (tuple(system.unknowns[u].size for u in units), pattern)
-            first = representative.setdefault(key, b)
+            first = representative.setdefault(_block_pattern(system, units, rows, assigned), b)
             if first != b:
                 same_as[b] = first
                 continue
-        cols: dict[int, int] = {}
-        for u in units:
-            for k in range(system.unknowns[u].size):
-                cols[uo[u] + k] = len(cols)
-        size = len(cols)
-        a = np.zeros((size, size))
-        i = 0
-        for r in rows:
-            matched = len(assigned[r])
-            whole = matched == row_size[r]
-            if i + matched > size:
-                break
-            for lr, col, value in row_entries(system, realization, r, uo):
-                j = cols.get(col)
-                if j is not None:
-                    # a half-matched row block stands for one generic combination of its rows
-                    if whole:
-                        a[i + lr, j] += value
-                    else:
-                        a[i, j] += (1.0, 0.61)[lr] * value
-            i += matched
-        if i != size:
+        a = _block_matrix(system, realization, units, rows, assigned, uo)
+        if a is None:
             bad.append(b)
-            continue
-        by_size.setdefault(size, []).append((b, a))
+        else:
+            by_size.setdefault(len(a), []).append((b, a))
     for items in by_size.values():
         stack = np.stack([a for _, a in items])
         s = np.linalg.svd(stack, compute_uv=False)
@@ -216,11 +164,85 @@ def _singular_blocks(
     return sorted(bad)
 
 
+def _rows_of_blocks(
+    system: ConstraintSystem, blocks: list[list[int]], assigned: list[list[int]]
+) -> list[list[int]]:
+    """The rows matched into each block."""
+    block_of = [0] * len(system.unknowns)
+    for b, units in enumerate(blocks):
+        for u in units:
+            block_of[u] = b
+    rows_of: list[list[int]] = [[] for _ in blocks]
+    for r, units in enumerate(assigned):
+        if units:
+            rows_of[block_of[units[0]]].append(r)
+    return rows_of
+
+
+def _block_pattern(
+    system: ConstraintSystem, units: list[int], rows: list[int], assigned: list[list[int]]
+) -> tuple:
+    """What a block's regularity depends on: sizes, row kinds, local incidences, shared points."""
+    local = {u: i for i, u in enumerate(units)}
+    shared: dict[tuple[int, object], int] = {}
+    row_kind, row_adj, row_pair = system.row_kind, system.row_adj, system.row_pair
+    pin_kind = RowKind.PIN  # a local: enum attribute lookups are slow in the loop below
+    pattern = tuple(
+        (
+            row_kind[r],
+            len(assigned[r]),
+            tuple(local.get(u, -1) for u in row_adj[r]),
+            # rows that share a point (one pin, one P pair) share it in the pattern
+            shared.setdefault(
+                (0, system.mechanism.pair(row_pair[r]).point)
+                if row_kind[r] is pin_kind
+                else (1, row_pair[r]),
+                len(shared),
+            ),
+        )
+        for r in rows
+    )
+    return (tuple(system.unknowns[u].size for u in units), pattern)
+
+
+def _block_matrix(
+    system: ConstraintSystem,
+    realization: Realization,
+    units: list[int],
+    rows: list[int],
+    assigned: list[list[int]],
+    uo: list[int],
+) -> np.ndarray | None:
+    """The block's square Jacobian at ``realization``, or None when its rows do not fill it."""
+    cols: dict[int, int] = {}
+    for u in units:
+        for k in range(system.unknowns[u].size):
+            cols[uo[u] + k] = len(cols)
+    size = len(cols)
+    a = np.zeros((size, size))
+    i = 0
+    for r in rows:
+        matched = len(assigned[r])
+        whole = matched == system.row_size[r]
+        if i + matched > size:
+            break
+        for lr, col, value in row_entries(system, realization, r, uo):
+            j = cols.get(col)
+            if j is not None:
+                # a half-matched row block stands for one generic combination of its rows
+                if whole:
+                    a[i + lr, j] += value
+                else:
+                    a[i, j] += (1.0, 0.61)[lr] * value
+        i += matched
+    return a if i == size else None
+
+
 def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis:
     """Generic rank analysis of ``system`` (pair rows, then driver rows).
 
-    >>> from structure.model import Mechanism
-    >>> from structure.rigidity.constraints import constraint_system
+    >>> from structure import Mechanism
+    >>> from structure.rigidity import constraint_system
     >>> m = Mechanism.from_pairs([("0", "1", "R", "O"), ("1", "2", "R", "p"),
     ...                           ("1", "2", "R", "q")])          # a double pin
     >>> g = generic_rank(constraint_system(m, ["1"]))

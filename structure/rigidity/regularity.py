@@ -10,7 +10,7 @@ recompute the rank. A higher rank there means the sketch was singular; the
 nearby pose is regular and its counts are the mechanism's.
 
 >>> from structure import parse_edgelist
->>> from structure.rigidity.constraints import constraint_system, sketch_realization
+>>> from structure.rigidity import constraint_system, sketch_realization
 >>> m = parse_edgelist(["0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D", "point A 0 0",
 ...                     "point B 1 0", "point C 3 0", "point D 2 0"])   # a flat parallelogram
 >>> system = constraint_system(m)

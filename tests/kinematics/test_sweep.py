@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+import re
 
 import numpy as np
 import pytest
@@ -201,3 +202,151 @@ def test_sweep_and_animate_take_an_inputs_file(tmp_path, capsys):
     from PIL import Image
 
     assert Image.open(gif).n_frames == 3
+
+
+# ---------------------------------------------------------------- branch changes (issue 11)
+
+PARALLELOGRAM = """
+driver 1 omega=10
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0 0.2
+point C 0.5 0.2
+point D 0.5 0
+"""
+
+
+@pytest.mark.parametrize("steps", [7, 360])
+def test_a_parallelogram_never_jumps_to_the_antiparallelogram_silently(steps):
+    # crank AB = rocker DC = 0.2, coupler = frame = 0.5, crank at 90° in the sketch: all four
+    # links come into line when the crank lies along the frame, at inputs 90° and 270°
+    # (change points). Before them the parallelogram turns the rocker with the crank, ω3 = ω1.
+    from kinematics.errors import BranchChangeError
+
+    plan = plan_of(PARALLELOGRAM)
+    with pytest.raises(BranchChangeError, match=r"II\(2,3\).* at input 90°") as err:
+        sweep(plan, steps=steps)
+    assert isinstance(err.value, AssemblyError)
+    assert err.value.group == "II(2,3)"
+    assert err.value.pose[0] == pytest.approx(math.pi / 2, abs=1e-6)
+    # up to the change point the sweep is the parallelogram's: ω3 = 10 at every pose
+    before = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
+    before = before[before < math.pi / 2 - 1e-3]
+    result = sweep(plan, before)
+    np.testing.assert_allclose(result.links["3"]["omega"], 10.0, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(result.links["2"]["omega"], 0.0, rtol=0, atol=1e-9)
+
+
+def test_a_deltoid_whose_outer_pins_meet_is_singular_not_too_short():
+    # a kite: crank AB = frame AD = 0.3, coupler BC = rocker DC = 0.5; B meets D at input 270°
+    s = 0.15 + math.sqrt(0.25 - 0.045) / math.sqrt(2)
+    text = f"""
+driver 1 omega=10
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0 0.3
+point C {s!r} {s!r}
+point D 0.3 0
+"""
+    from kinematics.errors import SingularPoseError
+
+    for steps in (7, 360):
+        with pytest.raises(SingularPoseError, match="singular pose at input 270°") as err:
+            sweep(plan_of(text), steps=steps)
+        assert "too short" not in str(err.value)
+        assert "B and D coincide" in str(err.value)
+
+
+@pytest.mark.parametrize("steps", [7, 36, 360])
+def test_a_non_grashof_sweep_names_the_whole_range_it_cannot_assemble_in_degrees(steps):
+    # a = 0.1 (crank), b = |BC| = √0.05, c = |CD| = √0.02, d = 0.4: the dyad stretches out
+    # when |BD| = b + c, |BD|² = a² + d² − 2ad·cos φ: the dead points at ±φ0
+    text = CRANK_ROCKER.replace("point C 0.3 0.3", "point C 0.3 0.1")
+    b, c = math.sqrt(0.05), math.sqrt(0.02)
+    phi0 = math.degrees(math.acos((0.01 + 0.16 - (b + c) ** 2) / 0.08))
+    with pytest.raises(AssemblyError) as err:
+        sweep(plan_of(text), steps=steps)
+    message = str(err.value)
+    low, high = (float(x) for x in re.findall(r"([\d.]+)°", message)[:2])
+    # printed to 6 significant figures
+    assert low == pytest.approx(phi0, abs=1e-3)
+    assert high == pytest.approx(360 - phi0, abs=1e-3)
+    assert "dead points" in message and "rad" not in message
+
+
+def test_a_sweep_too_large_for_memory_is_refused_with_a_clear_message(tmp_path, capsys):
+    from kinematics.errors import SweepSizeError
+
+    with pytest.raises(SweepSizeError, match="30000000 poses"):
+        sweep(plan_of(CRANK_ROCKER), steps=30_000_000)
+    path = tmp_path / "m.edges"
+    path.write_text(CRANK_ROCKER)
+    assert main(["sweep", str(path), "--steps", "30000000"]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("error: ") and "--steps" in err and "Traceback" not in err
+
+
+# ---------------------------------------------------------------- what a sweep returns (issue 12)
+
+
+def test_positions_only_sweep_gives_the_same_positions_and_nothing_more():
+    plan = make_plan(analyze(read_edgelist(_fixture("jansen.edges"))))
+    full = sweep(plan, steps=720)
+    bare = sweep(plan, steps=720, rates=False)
+    assert set(bare.points) == set(full.points)
+    for name, values in bare.points.items():
+        assert list(values) == ["position"]
+        np.testing.assert_allclose(
+            values["position"], full.points[name]["position"], rtol=0, atol=1e-15
+        )
+    for name, values in bare.links.items():
+        assert list(values) == ["angle"]
+        np.testing.assert_array_equal(values["angle"], full.links[name]["angle"])
+    assert dict(bare.balancing) == {}
+
+
+def test_sweep_points_share_one_block_and_ground_points_are_constants():
+    plan = plan_of(CRANK_ROCKER)
+    result = sweep(plan, steps=16)
+    moving = [result.points[p]["position"] for p in "BC"]
+    assert moving[0].base is not None and moving[0].base is moving[1].base
+    a = result.points["A"]
+    np.testing.assert_array_equal(a["position"], np.zeros((16, 2)))
+    np.testing.assert_array_equal(a["velocity"], np.zeros((16, 2)))
+    assert not a["position"].flags.writeable
+    # the crank tip: B = A + 0.1·(cos φ, sin φ), v = 10·J·(B − A), a = −100·(B − A)
+    phi = result.inputs[:, 0]
+    r = 0.1 * np.column_stack([np.cos(phi), np.sin(phi)])
+    np.testing.assert_allclose(result.points["B"]["position"], r, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(
+        result.points["B"]["velocity"], 10 * np.column_stack([-r[:, 1], r[:, 0]]), atol=1e-14
+    )
+    np.testing.assert_allclose(result.points["B"]["acceleration"], -100 * r, atol=1e-13)
+
+
+def test_link_angles_and_transmission_are_computed_when_first_read(monkeypatch):
+    import kinematics.sweep as sweep_module
+
+    calls = []
+    real = sweep_module._angles
+    monkeypatch.setattr(sweep_module, "_angles", lambda *a: calls.append(1) or real(*a))
+    result = sweep(plan_of(CRANK_ROCKER), steps=36)
+    assert calls == []
+    assert len(result.transmission) == 1 and calls == [1]
+    # the coupler's angle read lazily is the rotation of BC from the sketch
+    b, c = result.points["B"]["position"], result.points["C"]["position"]
+    bc = c - b
+    turned = np.unwrap(np.arctan2(bc[:, 1], bc[:, 0]) - math.atan2(0.3, 0.2))
+    np.testing.assert_allclose(result.links["2"]["angle"], turned, atol=1e-12)
+
+
+def _fixture(name: str):
+    from ..conftest import FIXTURES
+
+    return FIXTURES / name

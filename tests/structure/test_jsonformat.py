@@ -8,6 +8,7 @@ import pytest
 
 from structure.errors import EdgeListError, MechanismError
 from structure.model import Driver, Mechanism, PairKind, PointDef
+from structure.readwrite.edgelist import parse_edgelist
 from structure.readwrite.jsonformat import (
     mechanism_from_dict,
     mechanism_from_json,
@@ -335,3 +336,96 @@ def test_dict_source_names_the_error():
         mechanism_from_dict({"pairs": 3})
     assert info.value.source == "<dict>"
     assert str(info.value).startswith("<dict>: ")
+
+
+# ------------------------------------------------------------------ one verdict for both readers
+# The same bad content written as an edge-list line and as a JSON load: both readers
+# build it through the same checks (structure.validation), so both refuse it for the
+# same reason. Each row is a case where the JSON reader used to accept what the edge
+# list refused.
+SAME_VERDICT = [
+    pytest.param(
+        "mass 2 -1 0.1 B",
+        {"kind": "mass", "link": "2", "point": "B", "values": [-1, 0.1]},
+        "mass and moment of inertia cannot be negative",
+        id="negative-mass",
+    ),
+    pytest.param(
+        "mass 2 1 -0.1 B",
+        {"kind": "mass", "link": "2", "point": "B", "values": [1, "-0.1"]},
+        "mass and moment of inertia cannot be negative",
+        id="negative-moment-of-inertia",
+    ),
+    pytest.param(
+        "mass 2 5 B",
+        {"kind": "mass", "link": "2", "point": "B", "values": [5]},
+        "expected 'mass LINK m J S'",
+        id="missing-value",
+    ),
+    pytest.param(
+        "force 2 B 1 2 3",
+        {"kind": "force", "link": "2", "point": "B", "values": [1, 2, 3]},
+        "expected 'force LINK POINT fx fy'",
+        id="extra-value",
+    ),
+    pytest.param(
+        "balance 1 A angle=30 angle=40",
+        {"kind": "balance", "link": "1", "point": "A", "values": [30, 40]},
+        "expected 'balance LINK POINT angle=DEG'",
+        id="balance-two-directions",
+    ),
+    pytest.param(
+        "moment 2 B 5",
+        {"kind": "moment", "link": "2", "point": "B", "values": [5]},
+        "expected 'moment LINK M'",
+        id="moment-at-a-point",
+    ),
+    pytest.param(
+        "gravity 2 0 -9.81",
+        {"kind": "gravity", "link": "2", "values": [0, -9.81]},
+        "expected 'gravity gx gy'",
+        id="gravity-on-a-link",
+    ),
+]
+
+
+@pytest.mark.parametrize(("line", "load", "reason"), SAME_VERDICT)
+def test_json_refuses_what_the_edge_list_refuses_for_the_same_reason(line, load, reason):
+    lines = [f"{' '.join(p['links'])} {p['kind']} {p['point']}" for p in FOURBAR_PAIRS]
+    with pytest.raises(EdgeListError) as info:
+        parse_edgelist([*lines, line], "t.edges")
+    assert [p.reason for p in info.value.problems] == [reason]
+    error = _error(_fourbar(loads=[load]))
+    assert [p.reason for p in error.problems] == [f"loads[0]: {reason}"]
+
+
+@pytest.mark.parametrize(
+    ("load", "word"),
+    [
+        pytest.param(
+            {"kind": "force", "link": "2", "point": "B", "values": [1, 2], "colour": "red"},
+            "'colour'",
+            id="unknown-load-key",
+        ),
+        pytest.param({"kind": ["mass"], "link": "2", "values": [1, 2]}, "kind", id="kind-list"),
+    ],
+)
+def test_bad_load_object_is_one_edgelist_error(load, word):
+    error = _error(_fourbar(loads=[load]))
+    assert len(error.problems) == 1
+    assert word in error.reason
+
+
+def test_good_loads_read_as_in_the_edge_list():
+    lines = [f"{' '.join(p['links'])} {p['kind']} {p['point']}" for p in FOURBAR_PAIRS]
+    statements = ["mass 2 3 0.1 B", "force 2 B 1 -2", "moment 3 5", "gravity 0 -9.81",
+                  "balance 1 A angle=30"]  # fmt: skip
+    loads = [
+        {"kind": "mass", "link": "2", "point": "B", "values": [3, 0.1]},
+        {"kind": "force", "link": "2", "point": "B", "values": [1, -2]},
+        {"kind": "moment", "link": "3", "point": None, "values": [5]},
+        {"kind": "gravity", "link": "", "values": [0, -9.81]},
+        {"kind": "balance", "link": "1", "point": "A", "values": [30]},
+    ]
+    parsed = parse_edgelist([*lines, *statements], "t")
+    assert mechanism_from_dict(_fourbar(loads=loads), "t") == parsed

@@ -1,0 +1,166 @@
+"""Read or write a mechanism in the format its file name says (and, where two share one, its text).
+
+Reading, by extension:
+
+* ``.json``: our JSON form, or pylinkage's JSON (a mechanism or linkage: an
+  object with a list of ``joints``);
+* ``.pyslvs``: a Pyslvs-UI project (YAML with the expression under
+  ``mechanism``), or a bare pyslvs expression ``M[...]``;
+* any other (``.edges``, ``.txt``, none): a pyslvs expression when the text
+  starts with ``M[`` (after comments), else the edge list.
+
+Writing, by extension: ``.edges`` the edge list, ``.json`` our JSON form,
+``.pyslvs`` a Pyslvs-UI project. Edge list and JSON round-trip losslessly.
+
+>>> import tempfile, pathlib
+>>> folder = pathlib.Path(tempfile.mkdtemp())
+>>> (folder / "arm.txt").write_text("M[J[R, P[0, 0], L[ground, L1]], J[R, P[1, 0], L[L1]]]")
+53
+>>> m = read_mechanism(folder / "arm.txt")
+>>> print(mechanism_text(m, ".edges"), end="")
+name arm
+ground ground
+ground L1 R J0
+point J0 0 0
+point J1 1 0 on=L1
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Callable
+from pathlib import Path
+
+from ..errors import EdgeListError, EdgeListProblem, MechanismError
+from ..model import Mechanism
+from ..utils import paused_gc
+from .edgelist import parse_edgelist, write_edgelist
+from .jsonformat import mechanism_from_dict, mechanism_to_json
+from .pylinkage import is_pylinkage, mechanism_from_pylinkage
+from .pyslvs import looks_like_expression, parse_pyslvs, pyslvs_project
+
+__all__ = [
+    "READ_SUFFIXES",
+    "WRITE_SUFFIXES",
+    "mechanism_text",
+    "parse_mechanism",
+    "read_mechanism",
+    "write_mechanism",
+]
+
+
+def _json(text: str, source: str, name: str) -> Mechanism:
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        lines = text.splitlines()
+        line = lines[exc.lineno - 1] if 0 < exc.lineno <= len(lines) else ""
+        raise EdgeListError(
+            source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")]
+        ) from None
+    if is_pylinkage(data):
+        mechanism = mechanism_from_pylinkage(data, source)
+        return mechanism if mechanism.name else mechanism.evolve(name=name)
+    return mechanism_from_dict(data, source)
+
+
+def _pyslvs(text: str, source: str, name: str) -> Mechanism:
+    return parse_pyslvs(text, source, name)
+
+
+def _text(text: str, source: str, name: str) -> Mechanism:
+    if looks_like_expression(text):
+        return parse_pyslvs(text, source, name)
+    with paused_gc():
+        return parse_edgelist(text.splitlines(), source)
+
+
+_READERS: dict[str, Callable[[str, str, str], Mechanism]] = {
+    ".json": _json,
+    ".pyslvs": _pyslvs,
+}
+
+#: extensions read by their own reader; any other is an edge list or a pyslvs expression
+READ_SUFFIXES = (".edges", *_READERS)
+
+_WRITERS: dict[str, Callable[[Mechanism], str]] = {
+    ".edges": write_edgelist,
+    ".json": lambda mechanism: mechanism_to_json(mechanism) + "\n",
+    ".pyslvs": pyslvs_project,
+}
+
+#: extensions :func:`write_mechanism` writes
+WRITE_SUFFIXES = tuple(_WRITERS)
+
+
+def parse_mechanism(text: str, suffix: str = ".edges", source: str = "<string>") -> Mechanism:
+    """Parse ``text`` as the format of a file ending in ``suffix`` (see the module).
+
+    Raises
+    ------
+    EdgeListError
+        On any problem in the text.
+    """
+    name = Path(source).stem if source and not source.startswith("<") else ""
+    return _READERS.get(suffix.lower(), _text)(text, source, name)
+
+
+def read_mechanism(path: str | os.PathLike[str]) -> Mechanism:
+    """Read a mechanism file (UTF-8) in the format its extension and text say.
+
+    A pyslvs expression, which has no title, is named after the file.
+
+    Raises
+    ------
+    EdgeListError
+        On any problem in the file, or when it cannot be read.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except OSError as exc:
+        raise EdgeListError(
+            str(path), [EdgeListProblem(0, "", f"cannot read: {exc.strerror}")]
+        ) from exc
+    except UnicodeDecodeError as exc:
+        raise EdgeListError(str(path), [EdgeListProblem(0, "", "not a UTF-8 text file")]) from exc
+    return parse_mechanism(text, path.suffix, str(path))
+
+
+def mechanism_text(mechanism: Mechanism, suffix: str) -> str:
+    """The text of ``mechanism`` in the format of extension ``suffix``.
+
+    Raises
+    ------
+    MechanismError
+        An extension with no mechanism writer.
+    EdgeListError
+        A mechanism the format cannot hold (a cam in pyslvs, ...).
+    """
+    writer = _WRITERS.get(suffix.lower())
+    if writer is None:
+        raise MechanismError(
+            f"no mechanism format has the extension {suffix or '(none)'!r}: "
+            f"use {', '.join(WRITE_SUFFIXES)}"
+        )
+    return writer(mechanism)
+
+
+def write_mechanism(mechanism: Mechanism, path: str | os.PathLike[str]) -> Path:
+    """Write ``mechanism`` to ``path`` in the format of its extension (UTF-8).
+
+    Raises
+    ------
+    MechanismError
+        An unknown extension, or the file cannot be written.
+    EdgeListError
+        A mechanism the format cannot hold.
+    """
+    path = Path(path)
+    text = mechanism_text(mechanism, path.suffix)
+    try:
+        path.write_text(text, encoding="utf-8")
+    except OSError as exc:
+        raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
+    return path

@@ -1,0 +1,75 @@
+"""Tests of structure.parallel: the same rows in the same order locally and on Dask.
+
+The Dask tests start a LocalCluster with two worker processes and compare its rows
+with the local run's; they are skipped only when dask[distributed] is not installed
+(it is in the ``test`` extra, so CI runs them).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+from kinematics.cli.main import main
+from structure.atlas import atlas
+from structure.batch import batch_items, classify_batch
+from structure.parallel import MissingExtraError, ordered_map
+
+ROOT = Path(__file__).resolve().parents[2]
+FIXTURE_FILES = sorted(str(p) for p in (ROOT / "fixtures").glob("*.edges"))
+
+
+def _square(x: int) -> int:
+    return x * x
+
+
+def test_ordered_map_keeps_the_order_in_every_local_mode():
+    expected = [x * x for x in range(50)]
+    assert list(ordered_map(_square, range(50))) == expected
+    assert list(ordered_map(_square, range(50), jobs=2, chunk=7)) == expected
+    assert list(ordered_map(_square, [], jobs=2)) == []
+
+
+def test_dask_missing_is_a_clear_message(monkeypatch, capsys):
+    monkeypatch.setitem(sys.modules, "dask.distributed", None)
+    with pytest.raises(MissingExtraError, match=r"pip install 'assur\[dask\]'"):
+        list(ordered_map(_square, range(3), dask_local=2))
+    assert main(["atlas", "--links", "4", "--dask-local", "2"]) == 2
+    assert "assur[dask]" in capsys.readouterr().err
+
+
+@pytest.fixture(scope="module")
+def scheduler():
+    distributed = pytest.importorskip("dask.distributed")
+    cluster = distributed.LocalCluster(
+        n_workers=2,
+        threads_per_worker=1,
+        processes=True,
+        host="127.0.0.1",
+        dashboard_address="127.0.0.1:0",
+    )
+    try:
+        yield cluster.scheduler_address
+    finally:
+        cluster.close()
+
+
+def test_dask_atlas_rows_equal_the_local_rows(scheduler):
+    local = list(atlas(8))
+    assert list(atlas(8, scheduler=scheduler)) == local
+    assert list(atlas(7, 2, labelled=True, scheduler=scheduler)) == list(atlas(7, 2, labelled=True))
+
+
+def test_dask_batch_rows_equal_the_local_rows(scheduler):
+    items = list(batch_items(FIXTURE_FILES))
+    assert list(classify_batch(items, scheduler=scheduler)) == list(classify_batch(items))
+
+
+def test_dask_local_cluster_from_the_command_line(capsys):
+    pytest.importorskip("dask.distributed")
+    assert main(["atlas", "--links", "6"]) == 0
+    local = capsys.readouterr().out
+    assert main(["atlas", "--links", "6", "--dask-local", "2"]) == 0
+    assert capsys.readouterr().out == local

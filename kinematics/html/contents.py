@@ -23,7 +23,8 @@ from typing import Any, NamedTuple
 
 from structure.errors import MechanismError
 from structure.model import Mechanism
-from structure.report import StructuralReport, analyze, report_to_dict
+from structure.readwrite.reports import report_to_dict
+from structure.report import StructuralReport, analyze
 
 from ..forces import ForceSolution, solve_forces
 from ..plan import SolvePlan, make_plan

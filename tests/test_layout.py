@@ -8,7 +8,8 @@ Floors, from the bottom:
   replacement, assur, report, chains, ...) < ``structure.readwrite`` and the
   many-mechanism jobs that read and write (``atlas``, ``batch``) < ``structure.explain``;
 - ``kinematics``: the solvers (plan, solve, sweep, forces, gears, ...) <
-  ``kinematics.explain`` and ``kinematics.figures`` < ``kinematics.cli``;
+  ``kinematics.explain`` and ``kinematics.figures`` < ``kinematics.html`` (the report page,
+  beside the CLI on the top floor) and ``kinematics.cli``;
 - ``structure`` < ``kinematics``: structure never imports kinematics;
 - each package's ``__init__`` is the façade on top that re-exports its public API.
 """
@@ -88,7 +89,7 @@ def _floor(module: str) -> tuple[str, int]:
         return package, 3
     if package == "structure":
         return package, {"readwrite": 1, "atlas": 1, "batch": 1, "explain": 2}.get(sub, 0)
-    return package, {"explain": 1, "figures": 1, "cli": 2, "__main__": 2}.get(sub, 0)
+    return package, {"explain": 1, "figures": 1, "html": 2, "cli": 2, "__main__": 2}.get(sub, 0)
 
 
 def _project_imports():

@@ -41,6 +41,7 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "animate": ("motion", "run_animate"),
     "convert": ("convert", "run"),
     "atlas": ("atlas", "run"),
+    "report": ("report", "run_report"),
 }
 
 

@@ -291,6 +291,21 @@ def _atlas_arguments(parser: argparse.ArgumentParser) -> None:
     add_run_options(parser, TABLE_FORMATS, "jsonl")
 
 
+def _report_arguments(command: argparse.ArgumentParser) -> None:
+    """``report FILE [-o OUT] [--lang en|vi] [--steps N]``."""
+    _add_file(command, "edge-list file (coordinates, loads and gears where it has them)")
+    command.add_argument(
+        "-o",
+        "--output",
+        metavar="OUT",
+        help="the HTML file to write (default: the file's name with .html, here)",
+    )
+    command.add_argument(
+        "--lang", choices=LANGUAGES, default="en", help="language of the page (default en)"
+    )
+    _add_steps(command, 120, "poses of the animation and the plots")
+
+
 #: every command, in the order ``assur --help`` lists them: name, help line, its arguments
 COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...] = (
     (
@@ -321,6 +336,12 @@ COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...]
         "atlas",
         "every kinematic chain of N links and F DOF, every mechanism of it classified",
         _atlas_arguments,
+    ),
+    (
+        "report",
+        "one self-contained HTML page: drawing, structure, kinematics, forces, cycle, gears, "
+        "worked solution",
+        _report_arguments,
     ),
 )
 

@@ -27,7 +27,6 @@ point J1 1 0 on=L1
 
 from __future__ import annotations
 
-import json
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -36,7 +35,7 @@ from ..errors import EdgeListError, EdgeListProblem, MechanismError
 from ..model import Mechanism
 from ..utils import paused_gc
 from .edgelist import parse_edgelist, write_edgelist
-from .jsonformat import mechanism_from_dict, mechanism_to_json
+from .jsonformat import decode_json, mechanism_from_dict, mechanism_to_json
 from .pylinkage import is_pylinkage, mechanism_from_pylinkage
 from .pyslvs import looks_like_expression, parse_pyslvs, pyslvs_project
 
@@ -51,14 +50,7 @@ __all__ = [
 
 
 def _json(text: str, source: str, name: str) -> Mechanism:
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        lines = text.splitlines()
-        line = lines[exc.lineno - 1] if 0 < exc.lineno <= len(lines) else ""
-        raise EdgeListError(
-            source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")]
-        ) from None
+    data = decode_json(text, source)
     if is_pylinkage(data):
         mechanism = mechanism_from_pylinkage(data, source)
         return mechanism if mechanism.name else mechanism.evolve(name=name)

@@ -39,7 +39,13 @@ from ..model import (
 )
 from ..validation import DRIVER_KEYS, validated
 
-__all__ = ["mechanism_from_dict", "mechanism_from_json", "mechanism_to_dict", "mechanism_to_json"]
+__all__ = [
+    "decode_json",
+    "mechanism_from_dict",
+    "mechanism_from_json",
+    "mechanism_to_dict",
+    "mechanism_to_json",
+]
 
 _TOP_KEYS = ("name", "ground", "drivers", "pairs", "points", "loads")
 _PAIR_FIELDS = (
@@ -62,16 +68,18 @@ _PAIR_FIELDS = (
 _LOAD_FIELDS = ("kind", "link", "point", "values")
 
 
-def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
-    """Parse the JSON form of a mechanism.
+def decode_json(text: str, source: str = "<json>") -> Any:
+    """The value of a JSON text, or an :class:`EdgeListError` saying where it is not JSON.
 
-    Raises
-    ------
-    EdgeListError
-        Invalid JSON (with its line) or any problem :func:`mechanism_from_dict` finds.
+    Every JSON reader of the project (ours, pylinkage's) decodes through this, so each
+    bad text gets the same named error: invalid JSON with its line, an integer of more
+    digits than Python converts, arrays or objects nested too deeply.
+
+    >>> decode_json('{"a": [1, 2]}')
+    {'a': [1, 2]}
     """
     try:
-        data = json.loads(text)
+        return json.loads(text)
     except json.JSONDecodeError as exc:
         lines = text.splitlines()
         line = lines[exc.lineno - 1] if 0 < exc.lineno <= len(lines) else ""
@@ -84,6 +92,17 @@ def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
     except RecursionError:
         reason = "invalid JSON: arrays or objects nested too deeply"
         raise EdgeListError(source, [EdgeListProblem(0, "", reason)]) from None
+
+
+def mechanism_from_json(text: str, source: str = "<json>") -> Mechanism:
+    """Parse the JSON form of a mechanism.
+
+    Raises
+    ------
+    EdgeListError
+        Invalid JSON (with its line) or any problem :func:`mechanism_from_dict` finds.
+    """
+    data = decode_json(text, source)
     return mechanism_from_dict(data, source)
 
 

@@ -44,7 +44,6 @@ are one body; links are numbered ``1, 2, ...`` in order, the frame is ``0``.
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from collections.abc import Iterable, Mapping, Sequence
@@ -52,6 +51,7 @@ from typing import Any
 
 from ..errors import EdgeListError, EdgeListProblem
 from ..model import Driver, Mechanism, Pair, PairKind, PointDef, validated
+from .jsonformat import decode_json
 
 __all__ = ["is_pylinkage", "mechanism_from_pylinkage", "parse_pylinkage"]
 
@@ -439,12 +439,5 @@ def parse_pylinkage(text: str, source: str = "<pylinkage>") -> Mechanism:
     EdgeListError
         Invalid JSON (with its line) or any problem of the description.
     """
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        lines = text.splitlines()
-        line = lines[exc.lineno - 1] if 0 < exc.lineno <= len(lines) else ""
-        raise EdgeListError(
-            source, [EdgeListProblem(exc.lineno, line, f"invalid JSON: {exc.msg}")]
-        ) from None
+    data = decode_json(text, source)
     return mechanism_from_pylinkage(data, source)

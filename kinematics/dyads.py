@@ -391,9 +391,15 @@ def _circle_circle(
     det = r1x * r2y
     t = np.multiply(r1y, r2x, out=ex)
     det -= t
-    if np.abs(det).min() * (1.0 / math.sqrt(len1 * len2)) <= DEAD_CENTRE:
-        _dead_centre(step, solve.plan, inputs, det * (1.0 / math.sqrt(len1 * len2)))
+    scale = _inverse_lengths(len1, len2)
+    if np.abs(det).min() * scale <= DEAD_CENTRE:
+        _dead_centre(step, solve.plan, inputs, det * scale)
     return (cx, cy, *_rrr_rates(pin_b, pin_d, r1x, r1y, r2x, r2y, det, t))
+
+
+def _inverse_lengths(len1: float, len2: float) -> float:
+    """1/(|BC|·|CD|) from the squared lengths, without their product over- or underflowing."""
+    return 1.0 / (math.sqrt(len1) * math.sqrt(len2))
 
 
 def _dead_height(solve: _FrameSolve, h: np.ndarray, inv, len1: float, len2: float) -> None:
@@ -401,7 +407,7 @@ def _dead_height(solve: _FrameSolve, h: np.ndarray, inv, len1: float, len2: floa
 
     The sine of the transmission angle is |BD|·h/(|BC|·|CD|).
     """
-    scale = 1.0 / math.sqrt(len1 * len2)
+    scale = _inverse_lengths(len1, len2)
     sine = h / inv
     if sine.min() * scale <= DEAD_CENTRE:
         _dead_centre(solve.step, solve.plan, solve.inputs, sine * scale)

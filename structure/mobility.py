@@ -33,6 +33,7 @@ from .rigidity.constraints import (
     ConstraintSystem,
     MissingGeometry,
     Realization,
+    RowKind,
     constraint_system,
     sketch_realization,
 )
@@ -215,19 +216,30 @@ def _extra_geometric(structural: dict[int, int], geometric: dict[int, int]) -> d
 
 
 def _geometric_passive(system: ConstraintSystem, realization: Realization) -> dict[str, int]:
-    """Null-space directions (drivers fixed) that move one link only, per link."""
+    """Null-space directions (drivers fixed) that move one link only, per link.
+
+    A link jointed to the ground that is not driven may turn (or slide) on
+    its ground joint alone: that motion is a driver candidate's, counted in W
+    as it is without coordinates, never a passive freedom.
+    """
     N = null_space(system, realization)
     if N.shape[1] == 0:
         return {}
     uo, _ = system.scalar_offsets()
+    m = system.mechanism
+    driven = {
+        system.row_link[r] for r, kind in enumerate(system.row_kind) if kind is RowKind.DRIVER
+    }
     out: dict[str, int] = {}
-    for link in system.mechanism.moving_links:
+    for link in m.moving_links:
         p0 = int(uo[system.pos[link]])
         cols = [p0, p0 + 1, int(uo[system.ang[link]])]
         rest = np.delete(N, cols, axis=0)
         s = np.linalg.svd(rest, compute_uv=False) if rest.size else np.zeros(0)
         rank = int(np.sum(s > 1e-8))
         k = N.shape[1] - rank
+        if k and link not in driven and m.ground_joint(link) is not None:
+            k -= 1  # the candidate's own motion on its ground joint
         if k:
             out[link] = k
     return out

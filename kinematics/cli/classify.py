@@ -17,7 +17,7 @@ from structure.readwrite.reports import (
     format_mobility_error,
     format_report,
     mobility_error_dict,
-    report_to_dict,
+    write_report_json,
 )
 from structure.report import all_driver_choices, analyze
 
@@ -63,7 +63,7 @@ def run_classify(args: argparse.Namespace) -> int:
     except MechanismError as exc:
         return failed(exc, args.json)
     if args.json:
-        print_json(report_to_dict(report, choices))
+        write_report_json(report, sys.stdout, choices)
     elif args.explain:
         sys.stdout.write(explain_structure(report, args.lang, args.explain))
     else:

@@ -44,6 +44,7 @@ from __future__ import annotations
 
 import math
 import os
+import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -199,7 +200,8 @@ def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
     """The grammar of a pair line; the checks of its content are :func:`make_pair`'s."""
     if len(tokens) < 3:
         raise StatementError("a pair needs at least 'a b KIND'")
-    a, b = tokens[0], tokens[1]
+    # names are shared, not copied per line: a link is named on ~3 lines of a large file
+    a, b = sys.intern(tokens[0]), sys.intern(tokens[1])
     kind = pair_kind(tokens[2])
     rest = tokens[3:]
     gear = kind is PairKind.H and "gear" in rest
@@ -207,7 +209,7 @@ def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
         rest = [t for t in rest if t != "gear"]
     point = None
     if rest and "=" not in rest[0]:
-        point, rest = rest[0], rest[1:]
+        point, rest = sys.intern(rest[0]), rest[1:]
     options: dict[str, str] = {}
     for tok in rest:
         key, eq, value = tok.partition("=")

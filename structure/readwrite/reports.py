@@ -3,7 +3,8 @@
 Text in, text out: :func:`format_report` and :func:`format_mobility_error`
 write the report of :func:`~structure.report.analyze` (or the counts behind
 a mobility error) the way the textbook answers; :func:`report_to_dict` and
-:func:`mobility_error_dict` give their JSON-ready forms.
+:func:`mobility_error_dict` give their JSON-ready forms, :func:`write_report_json` writes the
+first as a stream (compact for a large mechanism).
 
 >>> from structure import analyze, parse_edgelist
 >>> r = analyze(parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"]))
@@ -15,15 +16,23 @@ Structural formula: I(1) → II(2,3)
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import Any
+import json
+from collections.abc import Iterator, Sequence
+from typing import Any, TextIO
 
 from ..assur import AssurGroup, roman
 from ..errors import MobilityError
 from ..mobility import Mobility
 from ..report import DriverChoice, StructuralReport
 
-__all__ = ["format_mobility_error", "format_report", "mobility_error_dict", "report_to_dict"]
+__all__ = [
+    "LARGE_REPORT",
+    "format_mobility_error",
+    "format_report",
+    "mobility_error_dict",
+    "report_to_dict",
+    "write_report_json",
+]
 
 
 def _counts_line(m: Mobility) -> str:
@@ -154,48 +163,107 @@ def _group_dict(g: AssurGroup) -> dict[str, Any]:
     }
 
 
+def _report_items(
+    report: StructuralReport, choices: Sequence[DriverChoice]
+) -> Iterator[tuple[str, Any]]:
+    """The report's JSON keys and values in order; ``groups`` and ``group_dag`` as iterators."""
+    yield "name", report.mechanism.name
+    yield "source", report.mechanism.source
+    yield from _mobility_dict(report.mobility).items()
+    rm = report.replaced_mobility
+    yield "replaced", {"n": rm.n, "P5": rm.P5, "P4": rm.P4, "W": rm.W}
+    yield (
+        "replacements",
+        [
+            {
+                "virtual_link": r.virtual_link,
+                "pair": r.pair.label,
+                "line": r.pair.line_no,
+                "scheme": r.scheme,
+                "new_pairs": [p.label for p in r.new_pairs],
+                "roller": r.roller.roller if r.roller else None,
+            }
+            for r in report.replacements
+        ],
+    )
+    yield "drivers", list(report.drivers)
+    yield "drivers_chosen", report.drivers_chosen
+    d = report.decomposition
+    yield (
+        "set_aside",
+        {
+            "links": list(d.removed_links),
+            "pairs": [report.replaced.pair(p).label for p in d.removed_pairs],
+        },
+    )
+    yield "groups", (_group_dict(g) for g in report.groups)
+    yield "group_dag", (list(e) for e in report.dag.edges)
+    yield "mechanism_class", report.mechanism_class
+    yield "formula", report.formula
+    yield "textbook_formula", report.textbook_formula
+    if choices:
+        yield (
+            "driver_choices",
+            [
+                {
+                    "drivers": list(c.drivers),
+                    "mechanism_class": c.decomposition.mechanism_class,
+                    "formula": c.decomposition.formula,
+                    "groups": [_group_dict(g) for g in c.decomposition.groups],
+                }
+                for c in choices
+            ],
+        )
+
+
 def report_to_dict(
     report: StructuralReport, choices: Sequence[DriverChoice] = ()
 ) -> dict[str, Any]:
     """JSON-ready dict: ``n, P5, P4, redundant, passive, W, replaced, groups, ...``."""
-    out: dict[str, Any] = {"name": report.mechanism.name, "source": report.mechanism.source}
-    out.update(_mobility_dict(report.mobility))
-    rm = report.replaced_mobility
-    out["replaced"] = {"n": rm.n, "P5": rm.P5, "P4": rm.P4, "W": rm.W}
-    out["replacements"] = [
-        {
-            "virtual_link": r.virtual_link,
-            "pair": r.pair.label,
-            "line": r.pair.line_no,
-            "scheme": r.scheme,
-            "new_pairs": [p.label for p in r.new_pairs],
-            "roller": r.roller.roller if r.roller else None,
-        }
-        for r in report.replacements
-    ]
-    out["drivers"] = list(report.drivers)
-    out["drivers_chosen"] = report.drivers_chosen
-    d = report.decomposition
-    out["set_aside"] = {
-        "links": list(d.removed_links),
-        "pairs": [report.replaced.pair(p).label for p in d.removed_pairs],
+    return {
+        key: list(value) if isinstance(value, Iterator) else value
+        for key, value in _report_items(report, choices)
     }
-    out["groups"] = [_group_dict(g) for g in report.groups]
-    out["group_dag"] = [list(e) for e in report.dag.edges]
-    out["mechanism_class"] = report.mechanism_class
-    out["formula"] = report.formula
-    out["textbook_formula"] = report.textbook_formula
-    if choices:
-        out["driver_choices"] = [
-            {
-                "drivers": list(c.drivers),
-                "mechanism_class": c.decomposition.mechanism_class,
-                "formula": c.decomposition.formula,
-                "groups": [_group_dict(g) for g in c.decomposition.groups],
-            }
-            for c in choices
-        ]
-    return out
+
+
+#: from this many moving links on, ``--json`` is written compact (no indentation)
+LARGE_REPORT = 2000
+
+
+def write_report_json(
+    report: StructuralReport, stream: TextIO, choices: Sequence[DriverChoice] = ()
+) -> None:
+    """Write :func:`report_to_dict` as JSON to ``stream``, ended by a newline.
+
+    A report of fewer than :data:`LARGE_REPORT` moving links is written
+    indented by 2; a larger one compact and as a stream: its groups one at a
+    time, so that neither the whole dict nor the whole text is ever held.
+
+    >>> import io
+    >>> from structure import analyze, parse_edgelist
+    >>> r = analyze(parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"]))
+    >>> out = io.StringIO()
+    >>> write_report_json(r, out)
+    >>> json.loads(out.getvalue()) == report_to_dict(r)
+    True
+    """
+    if len(report.mechanism.moving_links) < LARGE_REPORT:
+        stream.write(json.dumps(report_to_dict(report, choices), indent=2, ensure_ascii=False))
+        stream.write("\n")
+        return
+    dumps = json.JSONEncoder(ensure_ascii=False, separators=(",", ":")).encode
+    sep = "{"
+    for key, value in _report_items(report, choices):
+        stream.write(f"{sep}{dumps(key)}:")
+        sep = ","
+        if not isinstance(value, Iterator):
+            stream.write(dumps(value))
+            continue
+        stream.write("[")
+        for i, item in enumerate(value):
+            stream.write(f",{dumps(item)}" if i else dumps(item))
+        stream.write("]")
+    stream.write("}\n")
 
 
 def mobility_error_dict(error: MobilityError) -> dict[str, Any]:

@@ -22,6 +22,7 @@ its dependent set.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -41,6 +42,7 @@ from .matching import Matcher, irreducible_blocks
 __all__ = [
     "DENSE_LIMIT",
     "RankAnalysis",
+    "dimensionless_jacobian",
     "generic_rank",
     "geometric_rank",
     "null_space",
@@ -284,19 +286,70 @@ def geometric_rank(system: ConstraintSystem, realization: Realization) -> RankAn
 
 
 def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
-    """The realization's size (largest span of its points), which makes lengths dimensionless."""
+    """The realization's size (largest span of its points), which makes lengths dimensionless.
+
+    A sketch whose points all coincide has the size of its distance from the
+    origin (1 when that is zero too), so that scaling a mechanism scales it.
+    """
     pts = [p for p in realization.point if p is not None]
     if not pts:
         return 1.0
-    arr = np.array(pts)
+    arr = np.array(pts, dtype=float)
     span = float(np.max(np.ptp(arr, axis=0))) if len(arr) > 1 else 0.0
-    return span if span > 0 else max(1.0, float(np.max(np.abs(arr))))
+    if span > 0 and math.isfinite(span):
+        return span
+    far = float(np.max(np.abs(arr)))
+    return far if far > 0 and math.isfinite(far) else 1.0
+
+
+def _angle_rows(system: ConstraintSystem, rows: Sequence[int]) -> list[bool]:
+    """Which scalar rows of the row blocks ``rows`` are angles (the others are lengths)."""
+    out: list[bool] = []
+    for r in rows:
+        kind = system.row_kind[r]
+        if kind is RowKind.SLIDE_ANGLE:
+            angle = True
+        elif kind in (RowKind.DRIVER, RowKind.PROBE):
+            angle = system.unknowns[system.row_adj[r][0]].kind == "ang"
+        else:
+            angle = False
+        out.extend([angle] * system.row_size[r])
+    return out
+
+
+def dimensionless_jacobian(
+    system: ConstraintSystem, realization: Realization, rows: Sequence[int] | None = None
+) -> tuple[np.ndarray, float]:
+    """The Jacobian of ``rows`` (default all) in the sketch's own unit of length, and that unit.
+
+    Positions are measured in units of :func:`sketch_scale` and length rows
+    divided by it; angles and angle rows are unchanged. The matrix, its rank
+    and its null space are then the same for a mechanism and for any scaled
+    copy of it, so one relative tolerance serves every unit of length.
+
+    >>> from structure import Mechanism
+    >>> from structure.rigidity import constraint_system, random_realization
+    >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "0", "R")])
+    >>> s = constraint_system(m, ["1"])
+    >>> J, length = dimensionless_jacobian(s, random_realization(s))
+    >>> J.shape, bool(length > 0)
+    ((7, 6), True)
+    """
+    rows = list(range(len(system.row_kind)) if rows is None else rows)
+    J = jacobian(system, realization, rows)
+    length = sketch_scale(system, realization)
+    uo, _ = system.scalar_offsets()
+    angle_cols = [int(uo[u]) for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
+    J[:, angle_cols] /= length
+    J[np.array(_angle_rows(system, rows), dtype=bool)] *= length
+    return J, length
 
 
 def dense_rank(system: ConstraintSystem, realization: Realization, method: str) -> RankAnalysis:
     """Rank-revealing pass over the rows in order at ``realization``.
 
-    Lengths are made dimensionless by the sketch's size, then each scalar row
+    Lengths are made dimensionless by the sketch's size
+    (:func:`dimensionless_jacobian`), then each scalar row
     is kept when its component orthogonal to the rows kept so far exceeds
     1e-8 of its norm.
     """
@@ -306,12 +359,8 @@ def dense_rank(system: ConstraintSystem, realization: Realization, method: str) 
             f"the mechanism has {n} scalar unknowns and a dependency the block analysis "
             f"cannot resolve; the dense rank pass is limited to {DENSE_LIMIT}"
         )
-    J = jacobian(system, realization)
-    uo, ro = system.scalar_offsets()
-    length = sketch_scale(system, realization)
-    for u, unk in enumerate(system.unknowns):
-        if unk.kind == "ang":
-            J[:, uo[u]] /= length
+    J, _ = dimensionless_jacobian(system, realization)
+    _, ro = system.scalar_offsets()
     basis = np.zeros((0, n))
     kept: list[int] = []
     dependent: dict[int, int] = {}
@@ -339,16 +388,15 @@ def dense_rank(system: ConstraintSystem, realization: Realization, method: str) 
 def null_space(
     system: ConstraintSystem, realization: Realization, rows: Sequence[int] | None = None
 ) -> np.ndarray:
-    """Orthonormal basis (columns) of the null space of the given rows at ``realization``."""
-    J = jacobian(system, realization, rows)
+    """Orthonormal basis (columns) of the null space of the given rows at ``realization``.
+
+    The basis is in the sketch's own unit of length (see
+    :func:`dimensionless_jacobian`): positions in units of :func:`sketch_scale`.
+    """
+    J, _ = dimensionless_jacobian(system, realization, rows)
     n = system.n_scalar_unknowns
     if J.shape[0] == 0:
         return np.eye(n)
-    uo, _ = system.scalar_offsets()
-    length = sketch_scale(system, realization)
-    for u, unk in enumerate(system.unknowns):
-        if unk.kind == "ang":
-            J[:, uo[u]] /= length
     _, s, vt = np.linalg.svd(J)
     rank = int(np.sum(s > _RANK_TOL * max(1.0, s[0] if len(s) else 1.0)))
     return vt[rank:].T

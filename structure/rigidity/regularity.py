@@ -26,8 +26,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .constraints import ConstraintSystem, Realization, RowKind, jacobian
-from .rank import null_space, sketch_scale
+from .constraints import ConstraintSystem, Realization, RowKind
+from .rank import dimensionless_jacobian, null_space, sketch_scale
 
 __all__ = ["nearby_pose"]
 
@@ -122,6 +122,16 @@ def nearby_pose(
     uo = offsets.tolist()
     length = sketch_scale(system, sketch)
     angle_columns = [uo[u] for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
+    # residuals in the sketch's unit: lengths divided by its size, angles as they are
+    residual_unit = np.concatenate(
+        [
+            np.full(system.row_size[r], 1.0 if kind is RowKind.SLIDE_ANGLE else length)
+            for r in rows
+            for kind in (system.row_kind[r],)
+        ]
+    )
+    position_columns = np.ones(int(offsets[-1]), dtype=bool)
+    position_columns[angle_columns] = False
     basis = null_space(system, sketch, rows)
     if basis.shape[1] == 0:
         return None
@@ -134,6 +144,8 @@ def nearby_pose(
             moved, residual = _moved(system, sketch, z, uo)
             if np.max(np.abs(residual), initial=0.0) <= _TOL * length:
                 return moved
-            jac = jacobian(system, moved, rows)
-            z = z + np.linalg.lstsq(jac, -residual, rcond=None)[0]
+            jac, _ = dimensionless_jacobian(system, moved, rows)
+            step = np.linalg.lstsq(jac, -residual / residual_unit, rcond=None)[0]
+            step[position_columns] *= length
+            z = z + step
     return None

@@ -38,6 +38,7 @@ from .readwrite.edgelist import parse_edgelist
 from .readwrite.jsonformat import mechanism_from_dict, mechanism_from_json
 from .readwrite.reports import mobility_error_dict
 from .readwrite.table import Column
+from .readwrite.textfile import read_text
 from .report import analyze
 from .utils import paused_gc
 
@@ -70,12 +71,8 @@ class BatchItem:
 def _file_item(path: str) -> BatchItem:
     form = "json" if Path(path).suffix.lower() == ".json" else "edges"
     try:
-        text = Path(path).read_text(encoding="utf-8-sig")
-    except OSError as exc:
-        error = EdgeListError(path, [EdgeListProblem(0, "", f"cannot read: {exc.strerror}")])
-        return BatchItem(path, "", form, str(error))
-    except UnicodeDecodeError:
-        error = EdgeListError(path, [EdgeListProblem(0, "", "not a UTF-8 text file")])
+        text = read_text(path)
+    except EdgeListError as error:
         return BatchItem(path, "", form, str(error))
     return BatchItem(path, text, form)
 

@@ -73,6 +73,7 @@ from ..validation import (
     validated,
 )
 from .jsonformat import mechanism_from_json
+from .textfile import opened
 
 __all__ = [
     "pair_from_tokens",
@@ -388,17 +389,11 @@ def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
         On any problem in the file, or when it cannot be read.
     """
     path = Path(path)
-    try:
+    with opened(path):
         if path.suffix.lower() == ".json":
             return mechanism_from_json(path.read_text(encoding="utf-8-sig"), source=str(path))
         with path.open(encoding="utf-8-sig") as handle, paused_gc():
             return parse_edgelist(handle, source=str(path))
-    except OSError as exc:
-        raise EdgeListError(
-            str(path), [EdgeListProblem(0, "", f"cannot read: {exc.strerror}")]
-        ) from exc
-    except UnicodeDecodeError as exc:
-        raise EdgeListError(str(path), [EdgeListProblem(0, "", "not a UTF-8 text file")]) from exc
 
 
 def pair_tokens(pair: Pair) -> list[str]:

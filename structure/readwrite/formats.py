@@ -31,13 +31,14 @@ import os
 from collections.abc import Callable
 from pathlib import Path
 
-from ..errors import EdgeListError, EdgeListProblem, MechanismError
+from ..errors import MechanismError
 from ..model import Mechanism
 from ..utils import paused_gc
 from .edgelist import parse_edgelist, write_edgelist
 from .jsonformat import decode_json, mechanism_from_dict, mechanism_to_json
 from .pylinkage import is_pylinkage, mechanism_from_pylinkage
 from .pyslvs import looks_like_expression, parse_pyslvs, pyslvs_project
+from .textfile import read_text
 
 __all__ = [
     "READ_SUFFIXES",
@@ -109,14 +110,7 @@ def read_mechanism(path: str | os.PathLike[str]) -> Mechanism:
         On any problem in the file, or when it cannot be read.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except OSError as exc:
-        raise EdgeListError(
-            str(path), [EdgeListProblem(0, "", f"cannot read: {exc.strerror}")]
-        ) from exc
-    except UnicodeDecodeError as exc:
-        raise EdgeListError(str(path), [EdgeListProblem(0, "", "not a UTF-8 text file")]) from exc
+    text = read_text(path)
     return parse_mechanism(text, path.suffix, str(path))
 
 

@@ -63,6 +63,7 @@ from typing import Any
 
 from ..errors import EdgeListError, EdgeListProblem
 from ..model import Driver, Mechanism, Pair, PairKind, PointDef, number_text, validated
+from .textfile import read_text
 
 try:  # reading a Pyslvs-UI project needs a YAML parser (the ``pyslvs`` extra)
     import yaml
@@ -734,10 +735,5 @@ def read_pyslvs(path: str | os.PathLike[str]) -> Mechanism:
         On any problem in the file, or when it cannot be read.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except OSError as exc:
-        raise _project_problem(str(path), f"cannot read: {exc.strerror}") from exc
-    except UnicodeDecodeError as exc:
-        raise _project_problem(str(path), "not a UTF-8 text file") from exc
+    text = read_text(path)
     return parse_pyslvs(text, str(path), name=path.stem)

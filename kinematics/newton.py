@@ -7,8 +7,11 @@ chunk of poses from a quadratic extrapolation of the last solutions and runs
 one batched Newton over the chunk, its Jacobian inverted once for several
 steps. Far-apart inputs are first joined by intermediate poses
 (:func:`densified`, a continuation from the sketch) so that Newton keeps the
-sketch's assembly mode. The Jacobian's θ columns are scaled by the sketch's
-size (:func:`scaled_jacobian`) so that lengths and angles weigh alike.
+sketch's assembly mode. The Jacobian is measured in the sketch's own unit of
+length (:func:`scaled_jacobian`: θ columns divided by the sketch's size, angle
+rows such as a P pair's θa − θb multiplied by it, the residual's angle rows too,
+:func:`scaled_residual`), so that lengths and angles weigh alike whatever the
+unit of length.
 
 >>> from structure import analyze, parse_edgelist
 >>> from kinematics import make_plan
@@ -26,17 +29,19 @@ import math
 
 import numpy as np
 
-from .equations import group_residual, group_system
+from .equations import Equation, group_residual, group_system
 from .errors import AssemblyError
 from .plan import GroupStep, SolvePlan
 
 __all__ = [
     "CONTINUATION_STEP",
+    "angle_rows",
     "densified",
     "follow",
     "needs_continuation",
     "newton_pose",
     "scaled_jacobian",
+    "scaled_residual",
 ]
 
 _MAX_NEWTON = 60
@@ -50,10 +55,37 @@ _MODE_JUMP = 0.2  # rad: a chunk whose angles land this far from the prediction 
 CONTINUATION_STEP = 0.05
 
 
-def scaled_jacobian(jac: np.ndarray, length: float) -> np.ndarray:
-    """The Jacobian with its θ columns divided by ``length`` (lengths and angles weigh alike)."""
+def angle_rows(equations: tuple[Equation, ...]) -> np.ndarray:
+    """Which rows of a group's stacked equations are angles (ANGLE, GEAR), the others lengths.
+
+    >>> angle_rows((Equation("HINGE", "1", "2"), Equation("ANGLE", "2", "0"))).tolist()
+    [False, False, True]
+    """
+    return np.array(
+        [eq.kind in ("ANGLE", "GEAR") for eq in equations for _ in range(eq.size)], dtype=bool
+    )
+
+
+def scaled_jacobian(jac: np.ndarray, length: float, angles: np.ndarray) -> np.ndarray:
+    """The Jacobian in the sketch's unit of length: θ columns / ``length``, ``angles`` rows × it.
+
+    The same matrix for a mechanism and any scaled copy of it (the idea of
+    :func:`structure.rigidity.dimensionless_jacobian`), so one relative
+    tolerance serves every unit of length. A step ``dz`` solved against it
+    is turned back by dividing its θ entries by ``length``.
+    """
     scaled = jac.copy()
     scaled[..., 2::3] /= length
+    scaled[..., angles, :] *= length
+    return scaled
+
+
+def scaled_residual(phi: np.ndarray, length: float, angles: np.ndarray) -> np.ndarray:
+    """The residual with its ``angles`` rows × ``length``: every row a length."""
+    if not angles.any():
+        return phi
+    scaled = phi.copy()
+    scaled[..., angles] *= length
     return scaled
 
 
@@ -66,15 +98,17 @@ def newton_pose(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -
         The residual stays above ``1e-9`` of the sketch's size.
     """
     tol = 1e-13 * plan.length
+    angles = angle_rows(step.equations)
     norm = math.inf
     for _ in range(_MAX_NEWTON):
         phi, jac, _, _ = group_system(step.links, step.equations, q, {}, 1)
+        phi = scaled_residual(phi, plan.length, angles)
         norm = float(np.linalg.norm(phi))
         if norm <= tol:
             return
-        dz = np.linalg.lstsq(scaled_jacobian(jac, plan.length)[0], -phi[0], rcond=None)[0]
+        dz = np.linalg.lstsq(scaled_jacobian(jac, plan.length, angles)[0], -phi[0], rcond=None)[0]
         dz[2::3] /= plan.length
-        _line_search(step, q, dz, norm)
+        _line_search(step, plan.length, q, dz, norm)
     if norm > 1e-9 * plan.length:
         raise AssemblyError.at(
             step.label,
@@ -84,14 +118,19 @@ def newton_pose(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -
         )
 
 
-def _line_search(step: GroupStep, q: dict, dz: np.ndarray, norm: float) -> None:
-    """Move the group's links along the Newton step ``dz``, halved until the residual drops."""
+def _line_search(step: GroupStep, length: float, q: dict, dz: np.ndarray, norm: float) -> None:
+    """Move the group's links along the Newton step ``dz``, halved until the residual drops.
+
+    The residual is measured as :func:`newton_pose` measures it (angle rows × ``length``).
+    """
+    angles = angle_rows(step.equations)
     base = {link: q[link].copy() for link in step.links}
     step_size = 1.0
     while True:
         for i, link in enumerate(step.links):
             q[link] = base[link] + step_size * dz[3 * i : 3 * i + 3]
-        trial = float(np.linalg.norm(group_system(step.links, step.equations, q, {}, 1)[0]))
+        phi = group_system(step.links, step.equations, q, {}, 1)[0]
+        trial = float(np.linalg.norm(scaled_residual(phi, length, angles)))
         if trial < norm or step_size < 1e-6:
             return
         step_size /= 2
@@ -156,18 +195,20 @@ def _batched_newton(step: GroupStep, plan: SolvePlan, chunk: dict, size: int) ->
     (which need the residual only), renewed every ``_KEEP_JACOBIAN`` steps.
     """
     tol = 1e-13 * plan.length
+    angles = angle_rows(step.equations)
     inverse = None
     for iteration in range(_CHUNK_ITERATIONS):
         if iteration % _KEEP_JACOBIAN == 0:
             phi, jac, _, _ = group_system(step.links, step.equations, chunk, {}, size)
         else:
             phi = group_residual(step.equations, chunk, size)
+        phi = scaled_residual(phi, plan.length, angles)
         worst = float(np.max(np.abs(phi)))
         if worst <= tol:
             return True
         if iteration % _KEEP_JACOBIAN == 0:
             try:
-                inverse = np.linalg.inv(scaled_jacobian(jac, plan.length))
+                inverse = np.linalg.inv(scaled_jacobian(jac, plan.length, angles))
             except np.linalg.LinAlgError:
                 return False
         dz = -np.einsum("nij,nj->ni", inverse, phi)

@@ -41,7 +41,14 @@ from . import branches, dyads
 from .equations import group_system
 from .errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import Frame, LinkTable
-from .newton import CONTINUATION_STEP, densified, follow, needs_continuation, scaled_jacobian
+from .newton import (
+    CONTINUATION_STEP,
+    angle_rows,
+    densified,
+    follow,
+    needs_continuation,
+    scaled_jacobian,
+)
 from .plan import GroupStep, SolvePlan
 from .state import KinematicState, LinkState, Motion, PointState
 
@@ -265,7 +272,10 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
     """A placed group's velocities and accelerations from its Jacobian, for every pose.
 
     ``J_g·q̇_g = −J_k·q̇_k`` and ``J_g·q̈_g = −J_k·q̈_k − (dJ/dt)·q̇``, as batched
-    linear solves (least squares for a redundant link's consistent rows).
+    linear solves (least squares for a redundant link's consistent rows, in the
+    sketch's unit of length, :func:`~kinematics.newton.scaled_jacobian`, so that
+    the answer does not depend on the unit). The dead-centre test is on that
+    scaled Jacobian too.
 
     Raises
     ------
@@ -275,19 +285,20 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
     q, qd, qdd = tables
     n = inputs.shape[0]
     _, jac, known_v, _ = group_system(step.links, step.equations, q, qd, n)
-    ratio = _conditioning(scaled_jacobian(jac, plan.length))
+    angles = angle_rows(step.equations)
+    scaled = scaled_jacobian(jac, plan.length, angles)
+    ratio = _conditioning(scaled)
     if step.group is not None and (ratio <= DEAD_CENTRE).any():
         k = int(np.argmax(ratio <= DEAD_CENTRE))
         raise SingularPoseError.at(
             step.label, inputs[k], f"σ_min/σ_max = {ratio[k]:.2g}", plan.driver_kinds
         )
-    solve = np.linalg.solve if jac.shape[1] == jac.shape[2] else _least_squares
-    z_dot = solve(jac, -known_v[..., None])[..., 0]
+    z_dot = _rate_solve(jac, scaled, plan.length, angles, -known_v[..., None])[..., 0]
     for i, link in enumerate(step.links):
         qd[link] = z_dot[:, 3 * i : 3 * i + 3]
     _, _, known_a, _ = group_system(step.links, step.equations, q, qdd, n)
     _, _, _, bias = group_system(step.links, step.equations, q, qd, n)
-    z_ddot = solve(jac, (-known_a - bias)[..., None])[..., 0]
+    z_ddot = _rate_solve(jac, scaled, plan.length, angles, (-known_a - bias)[..., None])[..., 0]
     for i, link in enumerate(step.links):
         qdd[link] = z_ddot[:, 3 * i : 3 * i + 3]
 
@@ -315,9 +326,27 @@ def _conditioning(jac: np.ndarray) -> np.ndarray:
     return ratio
 
 
-def _least_squares(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:
-    """Batched least squares for the consistent, overdetermined rows of a redundant link."""
-    return np.linalg.pinv(jac) @ rhs
+def _rate_solve(
+    jac: np.ndarray, scaled: np.ndarray, length: float, angles: np.ndarray, rhs: np.ndarray
+) -> np.ndarray:
+    """Batched ``jac·z = rhs``, its ``angles`` rows (and those of ``rhs``) × ``length``.
+
+    A square system is then solved as it stands: every row is a length, and
+    the column scaling of ``scaled`` would not change the pivots. A redundant
+    link's consistent, overdetermined rows go by least squares through
+    ``scaled`` (``jac`` in the sketch's unit of length), the θ entries of the
+    answer divided by ``length``. Either way the rows weigh alike in any unit.
+    """
+    rhs = rhs.copy()
+    rhs[:, angles] *= length
+    if jac.shape[1] == jac.shape[2]:
+        if angles.any():
+            jac = jac.copy()
+            jac[:, angles, :] *= length
+        return np.linalg.solve(jac, rhs)
+    out = np.linalg.pinv(scaled) @ rhs
+    out[:, 2::3] /= length
+    return out
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:

@@ -251,43 +251,8 @@ def kinematic_fixtures() -> tuple[str, ...]:
     return tuple(names)
 
 
-#: fixtures whose groups go through kinematics.solve/newton, which scale the θ columns of a
-#: group's Jacobian by the sketch's size but not its angle rows (a P pair's θa − θb): the
-#: dead-centre ratio then falls as 1/L² (a false dead centre at 1e-8 and 1e8), and a
-#: redundant link's least squares mixes units (ω 2.6 instead of 10 at 1e150). Those modules
-#: belong to another change (issue 11); the cases are kept here, expected to fail until then.
-NEWTON_UNSCALED = {
-    "ch2_2_2_slotted_link.edges",
-    "ch2_2_3_tangent.edges",
-    "ch2_2_8a_rocking_guide.edges",
-    "ch2_2_8b_rocking_guide.edges",
-    "ch2_2_8c_rocking_guide.edges",
-    "ch2_2_9_oscillating_cylinder.edges",
-    "ch3_3_10_sixbar.edges",
-    "ch3_3_6_sine_mechanism.edges",
-    "ch3_3_8_slotted_link.edges",
-    "exam_1_slotted_link.edges",
-    "inverted_crank_slider.edges",
-    "parallelogram_redundant.edges",
-    "quick_return_shaper.edges",
-    "scotch_yoke.edges",
-}
-
-
-def kinematic_cases() -> list:
-    return [
-        pytest.param(
-            name,
-            marks=pytest.mark.xfail(reason="kinematics.newton/solve: angle rows unscaled"),
-        )
-        if name in NEWTON_UNSCALED
-        else name
-        for name in kinematic_fixtures()
-    ]
-
-
 @pytest.mark.parametrize("factor", [1e-8, 1e8, 1e150])
-@pytest.mark.parametrize("name", kinematic_cases())
+@pytest.mark.parametrize("name", kinematic_fixtures())
 def test_fixture_kinematics_is_scale_free(name: str, factor: float) -> None:
     m = dict(located_fixtures())[name]
     base = kinematics_outcome(m, 1.0)

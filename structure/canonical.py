@@ -36,6 +36,7 @@ from dataclasses import dataclass
 __all__ = [
     "CanonicalForm",
     "canonical_form",
+    "group_elements",
     "group_order",
     "orbits",
 ]
@@ -231,13 +232,13 @@ def orbits(n: int, generators: Iterable[Sequence[int]]) -> tuple[tuple[int, ...]
     return tuple(sorted(tuple(members) for members in grouped.values()))
 
 
-def group_order(n: int, generators: Sequence[Sequence[int]]) -> int:
-    """Order of the permutation group the generators generate, by closure.
+def group_elements(n: int, generators: Sequence[Sequence[int]]) -> list[tuple[int, ...]]:
+    """Every element of the permutation group the generators generate, sorted (identity first).
 
-    Meant for checks on small groups: it lists every element.
+    By closure: meant for small groups (a chain's automorphisms).
 
-    >>> group_order(3, [(1, 2, 0), (1, 0, 2)])
-    6
+    >>> group_elements(3, [(1, 0, 2)])
+    [(0, 1, 2), (1, 0, 2)]
     """
     identity = tuple(range(n))
     seen = {identity}
@@ -251,4 +252,13 @@ def group_order(n: int, generators: Sequence[Sequence[int]]) -> int:
                     seen.add(product)
                     nxt.append(product)
         frontier = nxt
-    return len(seen)
+    return sorted(seen)
+
+
+def group_order(n: int, generators: Sequence[Sequence[int]]) -> int:
+    """Order of the permutation group the generators generate (see :func:`group_elements`).
+
+    >>> group_order(3, [(1, 2, 0), (1, 0, 2)])
+    6
+    """
+    return len(group_elements(n, generators))

@@ -38,7 +38,7 @@ import itertools
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 
-from .canonical import CanonicalForm, canonical_form, orbits
+from .canonical import CanonicalForm, canonical_form, group_elements, orbits
 
 __all__ = [
     "ChainCounts",
@@ -404,29 +404,13 @@ def _slot_fillings(edge: Joint, multiplicity: int, total: int) -> list[tuple[int
     return out
 
 
-def _group_elements(n: int, generators: Sequence[Sequence[int]]) -> list[tuple[int, ...]]:
-    identity = tuple(range(n))
-    seen = {identity}
-    frontier = [identity]
-    while frontier:
-        nxt = []
-        for element in frontier:
-            for g in generators:
-                product = tuple(g[element[v]] for v in range(n))
-                if product not in seen:
-                    seen.add(product)
-                    nxt.append(product)
-        frontier = nxt
-    return sorted(seen)
-
-
 def _distributions(graph: _Contracted, binaries: int) -> Iterator[list[tuple[int, ...]]]:
     """Ways to put ``binaries`` links on the edges, one per orbit of the graph's symmetry."""
     slots = _slots(graph)
     index = {edge: k for k, (edge, _) in enumerate(slots)}
     form = canonical_form(graph.vertices, _adjacency_loops(graph.vertices, graph.edges))
     images = []
-    for g in _group_elements(graph.vertices, form.generators)[1:]:
+    for g in group_elements(graph.vertices, form.generators)[1:]:
         images.append([index[(min(g[u], g[v]), max(g[u], g[v]))] for (u, v), _ in slots])
     choices = [_slot_fillings(edge, m, binaries) for edge, m in slots]
 

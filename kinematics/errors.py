@@ -79,13 +79,16 @@ class AssemblyError(MechanismError):
         self.indices = indices
         super().__init__(message)
 
+    #: what happens to the group, in the message
+    happens = "cannot be assembled"
+
     @classmethod
     def at(
         cls, group: str, inputs: np.ndarray, reason: str, kinds: Sequence[str] | None = None
     ) -> AssemblyError:
         """The error for ``group`` at the pose of driver ``inputs``, with its reason."""
         return cls(
-            f"group {group} cannot be assembled at input {inputs_text(inputs, kinds)}: {reason}",
+            f"group {group} {cls.happens} at input {inputs_text(inputs, kinds)}: {reason}",
             group,
             tuple(np.atleast_1d(inputs)),
         )
@@ -98,17 +101,7 @@ class BranchChangeError(AssemblyError):
     two circle intersections coincide) and the linkage may go on in either.
     """
 
-    @classmethod
-    def at(
-        cls, group: str, inputs: np.ndarray, reason: str, kinds: Sequence[str] | None = None
-    ) -> BranchChangeError:
-        """The error for ``group`` at the change point ``inputs``, with what happens there."""
-        return cls(
-            f"group {group} changes assembly branch at input {inputs_text(inputs, kinds)}: "
-            f"{reason}",
-            group,
-            tuple(np.atleast_1d(inputs)),
-        )
+    happens = "changes assembly branch"
 
 
 class SingularPoseError(MechanismError):

@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
-from structure.explain.structural import FORMATS, LANGUAGES
+from structure.explain.document import FORMATS, LANGUAGES
 from structure.readwrite.formats import WRITE_SUFFIXES
 from structure.readwrite.table import TABLE_FORMATS
 

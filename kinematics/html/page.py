@@ -17,7 +17,7 @@ from html import escape
 from importlib.resources import files
 
 from structure.errors import MechanismError
-from structure.explain.structural import LANGUAGES, explain_structure
+from structure.explain import LANGUAGES, explain_structure
 
 from ..explain import explain_forces, explain_kinematics
 from ..figures import sweep_figure

@@ -29,35 +29,15 @@ from ..mobility import Mobility
 from ..model import Mechanism, PairKind
 from ..report import StructuralReport
 from .document import (
-    FORMATS,
-    LANGUAGES,
     Doc,
     Math,
     Segment,
     check_options,
-    formula,
-    math_join,
-    number,
     render,
-    subscript,
 )
 from .phrases import PHRASES
 
-# explain_structure, and the engine's names and the phrases re-exported: they were defined here
-__all__ = [
-    "FORMATS",
-    "LANGUAGES",
-    "PHRASES",
-    "Doc",
-    "Math",
-    "check_options",
-    "explain_structure",
-    "formula",
-    "math_join",
-    "number",
-    "render",
-    "subscript",
-]
+__all__ = ["explain_structure"]
 
 
 def _mobility_formula(lang: str) -> Math:

@@ -14,8 +14,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from kinematics.cli.main import main
-from structure.explain.mathml import MATHML_NAMESPACE as MATHML
-from structure.explain.structural import (
+from structure.explain import (
     Math,
     check_options,
     explain_structure,
@@ -23,6 +22,7 @@ from structure.explain.structural import (
     number,
     subscript,
 )
+from structure.explain.mathml import MATHML_NAMESPACE as MATHML
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 

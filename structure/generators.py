@@ -72,6 +72,7 @@ class _Builder:
         self.n_links = 1  # next link name
         self.n_r = 0  # R point counter
         self.n_p = 0  # P point counter
+        self.slide_angles: set[float] = set()  # no two slides parallel: generic geometry
 
     # ------------------------------------------------------------- helpers
     def new_link(self) -> str:
@@ -106,7 +107,11 @@ class _Builder:
 
     def _slider(self, a: str, b: str) -> None:
         self.n_p += 1
-        self._add(_P, a, b, f"S{self.n_p}", round(self.rng.uniform(0.0, 180.0), 1))
+        angle = round(self.rng.uniform(0.0, 180.0), 1)
+        while angle in self.slide_angles:  # parallel slides would make a singular sketch
+            angle = round(self.rng.uniform(0.0, 180.0), 1)
+        self.slide_angles.add(angle)
+        self._add(_P, a, b, f"S{self.n_p}", angle)
 
     def external(self, kind: PairKind, link: str, known: str, used: set[str]) -> None:
         """An external pair from group link ``link`` to the known link ``known``.

@@ -65,11 +65,6 @@ from ..errors import EdgeListError, EdgeListProblem
 from ..model import Driver, Mechanism, Pair, PairKind, PointDef, number_text, validated
 from .textfile import read_text
 
-try:  # reading a Pyslvs-UI project needs a YAML parser (the ``pyslvs`` extra)
-    import yaml
-except ImportError:  # pragma: no cover - depends on the environment
-    yaml = None
-
 __all__ = [
     "JOINT_KINDS",
     "PyslvsJoint",
@@ -670,10 +665,12 @@ def _project_problem(source: str, reason: str, line_no: int = 0) -> EdgeListErro
 
 
 def _project(text: str, source: str) -> dict[str, Any]:
-    if yaml is None:
+    try:  # a Pyslvs-UI project needs a YAML parser (the ``pyslvs`` extra), imported on use
+        import yaml
+    except ImportError:  # pragma: no cover - depends on the environment
         raise _project_problem(
             source, "reading a Pyslvs project (YAML) needs PyYAML: pip install 'assur[pyslvs]'"
-        )
+        ) from None
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError as exc:

@@ -32,9 +32,7 @@ from __future__ import annotations
 import heapq
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-
-import networkx as nx
-from networkx.utils import UnionFind
+from typing import TYPE_CHECKING
 
 from .errors import DecompositionError, MobilityError
 from .kinds import DyadKind, PairKind
@@ -48,7 +46,11 @@ from .rigidity.constraints import (
 )
 from .rigidity.matching import irreducible_blocks
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
+from .utils import UnionFind
 from .validation import validated
+
+if TYPE_CHECKING:
+    import networkx as nx
 
 __all__ = [
     "AssurGroup",
@@ -132,8 +134,10 @@ class AssurGroup:
 class Decomposition:
     """Groups in solve order, their dependency DAG, and what was set aside.
 
-    ``dag`` has one node per group index; an edge ``i -> j`` means group ``j``
-    is attached to a link of group ``i``. ``removed_links`` and
+    ``dag_edges`` are the edges ``(i, j)`` of the dependency DAG between
+    group indices: group ``j`` is attached to a link of group ``i``; ``dag``
+    is that DAG as a frozen networkx ``DiGraph``, built when asked for (so
+    that classifying does not import networkx). ``removed_links`` and
     ``removed_pairs`` are the redundant links/pairs left out of the
     decomposition (``mechanism`` is what remains).
     """
@@ -141,9 +145,19 @@ class Decomposition:
     mechanism: Mechanism
     drivers: tuple[str, ...]
     groups: tuple[AssurGroup, ...]
-    dag: nx.DiGraph = field(repr=False)
+    dag_edges: tuple[tuple[int, int], ...] = field(repr=False)
     removed_links: tuple[str, ...] = ()
     removed_pairs: tuple[int, ...] = ()
+
+    @property
+    def dag(self) -> nx.DiGraph:
+        """The dependency DAG: one node per group index, the edges ``dag_edges``."""
+        import networkx as nx
+
+        dag = nx.DiGraph()
+        dag.add_nodes_from(range(len(self.groups)))
+        dag.add_edges_from(self.dag_edges)
+        return nx.freeze(dag)
 
     @property
     def mechanism_class(self) -> int:
@@ -478,12 +492,11 @@ def _decomposition(
         _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b], compound))
         for b in order
     )
-    group_dag = nx.DiGraph()
-    group_dag.add_nodes_from(range(len(groups)))
-    group_dag.add_edges_from((index[u], index[v]) for u, v in edges)
-    return Decomposition(
-        mechanism, tuple(drivers), groups, nx.freeze(group_dag), removed_links, removed_pairs
-    )
+    successors: list[list[int]] = [[] for _ in groups]
+    for u, v in edges:  # networkx's DiGraph order: by source, then as added
+        successors[index[u]].append(index[v])
+    dag_edges = tuple((u, v) for u, targets in enumerate(successors) for v in targets)
+    return Decomposition(mechanism, tuple(drivers), groups, dag_edges, removed_links, removed_pairs)
 
 
 def _topological_order(

@@ -30,9 +30,7 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from types import MappingProxyType
-from typing import Any
-
-import networkx as nx
+from typing import TYPE_CHECKING, Any
 
 from .errors import EdgeListError, EdgeListProblem, StatementError
 from .kinds import LoadKind, PairKind
@@ -45,6 +43,9 @@ from .validation import (
     check_point,
     validated,
 )
+
+if TYPE_CHECKING:
+    import networkx as nx
 
 __all__ = [
     "DRIVER_KEYS",
@@ -472,6 +473,8 @@ def make_driver(
 
 
 def _freeze_graph(pairs: Iterable[Pair], links: Iterable[str]) -> nx.MultiGraph:
+    import networkx as nx
+
     g = nx.MultiGraph()
     g.add_nodes_from(links)
     g.add_edges_from((p.a, p.b, p.id, {"pair": p}) for p in pairs)

@@ -17,9 +17,7 @@ import itertools
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
-
-import networkx as nx
+from typing import TYPE_CHECKING, Any
 
 from .assur import AssurGroup, Decomposition, decompose, driver_candidates
 from .errors import DecompositionError, EdgeListError, MobilityError
@@ -29,6 +27,9 @@ from .replacement import Replacement, replace_higher_pairs
 from .rigidity.constraints import constraint_system, sketch_problems
 from .rigidity.rank import generic_rank
 from .utils import paused_gc
+
+if TYPE_CHECKING:
+    import networkx as nx
 
 __all__ = ["DriverChoice", "StructuralReport", "all_driver_choices", "analyze"]
 

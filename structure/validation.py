@@ -31,7 +31,6 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from networkx.utils import UnionFind
 
 from .errors import (
     EdgeListError,
@@ -42,6 +41,7 @@ from .errors import (
     clipped,
 )
 from .kinds import LoadKind, PairKind
+from .utils import UnionFind
 
 if TYPE_CHECKING:  # the model builds on these checks: only its types are needed here
     from .model import Mechanism

@@ -173,6 +173,13 @@ OPTIONAL_EXTRAS = {
 
 #: module -> {project module it imports inside a function: why}
 ALLOWED_LOCAL_IMPORTS: dict[str, dict[str, str]] = {
+    "structure.model": {
+        "networkx": "start-up: the kinematic graph is built on first use, so that classifying "
+        "a mechanism does not pay for importing networkx (as long as the rest of assur classify)",
+    },
+    "structure.assur": {
+        "networkx": "start-up: the group DAG as a networkx DiGraph is built when asked for",
+    },
     "structure.report": {
         "structure.readwrite": "the formatting's old path, kept for one release with a "
         "DeprecationWarning (a top-level import would be a cycle: reports reads the report)",

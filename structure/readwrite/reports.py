@@ -197,7 +197,7 @@ def _report_items(
         },
     )
     yield "groups", (_group_dict(g) for g in report.groups)
-    yield "group_dag", (list(e) for e in report.dag.edges)
+    yield "group_dag", (list(e) for e in report.decomposition.dag_edges)
     yield "mechanism_class", report.mechanism_class
     yield "formula", report.formula
     yield "textbook_formula", report.textbook_formula

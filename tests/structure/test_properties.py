@@ -18,11 +18,13 @@ from functools import lru_cache
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from networkx.utils import UnionFind as NetworkxUnionFind
 
 from structure.assur import AssurGroup
 from structure.generators import GROUP_KINDS, random_mechanism_with_groups
 from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport, analyze
+from structure.utils import UnionFind
 
 KIND_SETS = {
     "no-RPP": tuple(k for k in GROUP_KINDS if k != "RPP"),
@@ -262,3 +264,19 @@ def test_generator_rejects_bad_arguments():
         random_mechanism_with_groups(9, kinds=())
     with pytest.raises(ValueError):
         random_mechanism_with_groups(9, compound=1.5)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    st.lists(st.lists(st.integers(0, 12), min_size=0, max_size=4), max_size=12),
+    st.lists(st.integers(0, 14), max_size=6),
+)
+def test_union_find_answers_as_networkx_does(unions, lookups):
+    """structure.utils.UnionFind stands in for networkx's (start-up): same sets, same order."""
+    ours, reference = UnionFind(range(10)), NetworkxUnionFind(range(10))
+    for elements in unions:
+        ours.union(*elements)
+        reference.union(*elements)
+    assert [ours[x] for x in lookups] == [reference[x] for x in lookups]
+    assert list(ours) == list(reference)
+    assert list(ours.to_sets()) == list(reference.to_sets())

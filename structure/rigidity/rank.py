@@ -361,28 +361,78 @@ def dense_rank(system: ConstraintSystem, realization: Realization, method: str) 
         )
     J, _ = dimensionless_jacobian(system, realization)
     _, ro = system.scalar_offsets()
-    basis = np.zeros((0, n))
-    kept: list[int] = []
+    kept = _kept_rows(J)
+    block_of = np.repeat(np.arange(len(system.row_size)), system.row_size).tolist()
     dependent: dict[int, int] = {}
-    for r in range(len(system.row_kind)):
-        for i in range(int(ro[r]), int(ro[r + 1])):
-            v = J[i]
-            norm = float(np.linalg.norm(v))
-            if norm == 0.0:
-                dependent[r] = dependent.get(r, 0) + 1
-                continue
-            w = v - basis.T @ (basis @ v)
-            w = w - basis.T @ (basis @ w)
-            wn = float(np.linalg.norm(w))
-            if wn <= _RANK_TOL * norm:
-                dependent[r] = dependent.get(r, 0) + 1
-            else:
-                basis = np.vstack([basis, w / wn])
-                kept.append(i)
+    kept_set = set(kept)
+    for i, r in enumerate(block_of):
+        if i not in kept_set:
+            dependent[r] = dependent.get(r, 0) + 1
     n_pair_scalar = int(ro[system.n_pair_rows])
     rank = sum(1 for i in kept if i < n_pair_scalar)
     free = [] if len(kept) == n else [(-1, n - len(kept))]
     return RankAnalysis(system, dependent, rank, n - rank, free, None, [], method)
+
+
+def _kept_rows(J: np.ndarray) -> list[int]:
+    """The rows of ``J`` kept in order: those not within 1e-8 (relative) of the span before.
+
+    A row is kept when its component orthogonal to the rows kept so far
+    exceeds ``1e-8`` of its norm. Runs of clearly independent rows (that
+    component above ``1e-6`` of the norm) are found at once by a QR
+    factorization of what is left of the rows; the first row of a run that
+    is not clearly independent is decided on its own by projecting it out
+    of the kept rows twice, exactly as a row-by-row pass would.
+    """
+    m, n = J.shape
+    norms = np.linalg.norm(J, axis=1)
+    basis = np.zeros((0, n))
+    kept: list[int] = []
+    i = 0
+    while i < m:
+        directions = _independent_run(J[i:], norms[i:], basis) if n else basis[:0]
+        run = len(directions)
+        if run:
+            basis = np.vstack([basis, directions])
+            kept.extend(range(i, i + run))
+            i += run
+            if i == m:
+                break
+        v, norm = J[i], float(norms[i])
+        if norm != 0.0:
+            w = _project_out(v, basis)
+            wn = float(np.linalg.norm(w))
+            if wn > _RANK_TOL * norm:
+                basis = np.vstack([basis, w / wn])
+                kept.append(i)
+        i += 1
+    return kept
+
+
+#: a row whose component orthogonal to the rows before exceeds this share of its
+#: norm is independent beyond doubt (the rank tolerance is 1e-8)
+_CLEARLY_INDEPENDENT = 1e-6
+
+
+def _project_out(rows: np.ndarray, basis: np.ndarray) -> np.ndarray:
+    """``rows`` less their components on the orthonormal rows of ``basis`` (twice, for accuracy)."""
+    if not len(basis):
+        return rows
+    rows = rows - (rows @ basis.T) @ basis
+    return rows - (rows @ basis.T) @ basis
+
+
+def _independent_run(rows: np.ndarray, norms: np.ndarray, basis: np.ndarray) -> np.ndarray:
+    """Orthonormal directions (rows) that the leading, clearly independent ``rows`` add.
+
+    The run stops before the first row not clearly independent of ``basis``
+    and of the rows before it; it has as many directions as rows.
+    """
+    q, r = np.linalg.qr(_project_out(rows, basis).T)
+    diag = np.abs(np.diagonal(r))
+    clear = diag > _CLEARLY_INDEPENDENT * norms[: len(diag)]
+    run = len(diag) if bool(clear.all()) else int(np.argmin(clear))
+    return q[:, :run].T
 
 
 def null_space(

@@ -230,16 +230,33 @@ def _geometric_passive(system: ConstraintSystem, realization: Realization) -> di
     driven = {
         system.row_link[r] for r, kind in enumerate(system.row_kind) if kind is RowKind.DRIVER
     }
+    links = m.moving_links
+    offsets = uo.tolist()
+    placements = [(offsets[system.pos[x]], offsets[system.ang[x]]) for x in links]
+    ranks = _ranks_without_links(N, placements)
     out: dict[str, int] = {}
-    for link in m.moving_links:
-        p0 = int(uo[system.pos[link]])
-        cols = [p0, p0 + 1, int(uo[system.ang[link]])]
-        rest = np.delete(N, cols, axis=0)
-        s = np.linalg.svd(rest, compute_uv=False) if rest.size else np.zeros(0)
-        rank = int(np.sum(s > 1e-8))
+    for link, rank in zip(links, ranks, strict=True):
         k = N.shape[1] - rank
         if k and link not in driven and m.ground_joint(link) is not None:
             k -= 1  # the candidate's own motion on its ground joint
         if k:
             out[link] = k
     return out
+
+
+def _ranks_without_links(N: np.ndarray, columns: Sequence[tuple[int, int]]) -> list[int]:
+    """Rank of ``N`` without the rows of each link's placement (position, angle).
+
+    ``columns`` holds each link's (position, angle) scalar offsets. The
+    matrices are all of one shape, so one batched SVD serves every link.
+    """
+    if not columns:
+        return []
+    keep = np.ones((len(columns), len(N)), dtype=bool)
+    for k, (p0, a0) in enumerate(columns):
+        keep[k, [p0, p0 + 1, a0]] = False
+    rest = np.stack([N[row] for row in keep])
+    if not rest.size:
+        return [0] * len(columns)
+    s = np.linalg.svd(rest, compute_uv=False)
+    return np.sum(s > 1e-8, axis=1).tolist()

@@ -128,10 +128,10 @@ def _singular_blocks(
 ) -> list[int]:
     """Indices of the irreducible blocks whose square Jacobian is numerically singular.
 
-    Blocks of equal size are stacked and their singular values computed in
-    one batched call. Generic regularity depends only on a block's pattern,
-    so when all blocks are checked (``which`` None) each pattern is evaluated
-    once: mechanisms repeat a few group shapes many times.
+    The blocks' singular values are computed in one batched call
+    (:func:`_singular_ratios`). Generic regularity depends only on a block's
+    pattern, so when all blocks are checked (``which`` None) each pattern is
+    evaluated once: mechanisms repeat a few group shapes many times.
     """
     offsets, _ = system.scalar_offsets()
     uo = offsets.tolist()
@@ -139,7 +139,7 @@ def _singular_blocks(
     trivial = (RowKind.DRIVER, RowKind.PROBE)
     representative: dict[tuple, int] = {}
     same_as: dict[int, int] = {}
-    by_size: dict[int, list[tuple[int, np.ndarray]]] = {}
+    evaluated: list[tuple[int, list[list[float]]]] = []
     bad: list[int] = []
     for b in range(len(blocks)) if which is None else which:
         units = blocks[b]
@@ -155,15 +155,30 @@ def _singular_blocks(
         if a is None:
             bad.append(b)
         else:
-            by_size.setdefault(len(a), []).append((b, a))
-    for items in by_size.values():
-        stack = np.stack([a for _, a in items])
-        s = np.linalg.svd(stack, compute_uv=False)
-        ratio = s[:, -1] / np.maximum(1.0, s[:, 0])
-        bad.extend(b for (b, _), x in zip(items, ratio, strict=True) if x <= _RANK_TOL)
+            evaluated.append((b, a))
+    if evaluated:
+        ratios = _singular_ratios([a for _, a in evaluated]).tolist()
+        bad.extend(b for (b, _), x in zip(evaluated, ratios, strict=True) if x <= _RANK_TOL)
     singular = set(bad)
     bad.extend(b for b, first in same_as.items() if first in singular)
     return sorted(bad)
+
+
+def _singular_ratios(matrices: Sequence[list[list[float]]]) -> np.ndarray:
+    """Smallest over largest singular value (at least 1) of each square matrix.
+
+    The matrices are stacked, each padded to the largest size with an identity
+    block, for a single batched SVD: the padding adds singular values 1, which
+    leaves the ratio unchanged whenever it is below 1 (the only place where
+    it is compared with the rank tolerance).
+    """
+    size = max(len(a) for a in matrices)
+    stack = np.zeros((len(matrices), size, size))
+    stack[:, range(size), range(size)] = 1.0
+    for k, a in enumerate(matrices):
+        stack[k, : len(a), : len(a)] = a
+    s = np.linalg.svd(stack, compute_uv=False)
+    return s[:, -1] / np.maximum(1.0, s[:, 0])
 
 
 def _rows_of_blocks(
@@ -214,14 +229,14 @@ def _block_matrix(
     rows: list[int],
     assigned: list[list[int]],
     uo: list[int],
-) -> np.ndarray | None:
+) -> list[list[float]] | None:
     """The block's square Jacobian at ``realization``, or None when its rows do not fill it."""
     cols: dict[int, int] = {}
     for u in units:
         for k in range(system.unknowns[u].size):
             cols[uo[u] + k] = len(cols)
     size = len(cols)
-    a = np.zeros((size, size))
+    a = [[0.0] * size for _ in range(size)]
     i = 0
     for r in rows:
         matched = len(assigned[r])
@@ -233,9 +248,9 @@ def _block_matrix(
             if j is not None:
                 # a half-matched row block stands for one generic combination of its rows
                 if whole:
-                    a[i + lr, j] += value
+                    a[i + lr][j] += value
                 else:
-                    a[i, j] += (1.0, 0.61)[lr] * value
+                    a[i][j] += (1.0, 0.61)[lr] * value
         i += matched
     return a if i == size else None
 

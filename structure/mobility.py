@@ -40,7 +40,15 @@ from .rigidity.constraints import (
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank, null_space
 from .rigidity.regularity import nearby_pose
 
-__all__ = ["Mobility", "PassiveMotion", "Redundancy", "counts", "mobility", "mobility_analysis"]
+__all__ = [
+    "Mobility",
+    "PassiveMotion",
+    "Redundancy",
+    "counts",
+    "mobility",
+    "mobility_analysis",
+    "rank_analyses",
+]
 
 
 @dataclass(frozen=True, slots=True)
@@ -155,48 +163,106 @@ def _usable_drivers(mechanism: Mechanism, drivers: Sequence[str]) -> tuple[str, 
 
 
 def mobility_analysis(
-    mechanism: Mechanism, drivers: Sequence[str] | None = None
+    mechanism: Mechanism,
+    drivers: Sequence[str] | None = None,
+    *,
+    generic: RankAnalysis | None = None,
 ) -> tuple[Mobility, RankAnalysis, RankAnalysis | None]:
     """:func:`mobility` and the rank analyses behind it (generic, geometric or None).
 
     The analyses are of the system driven by ``drivers``; the decomposition
-    reuses them instead of building the system again.
+    reuses them instead of building the system again. ``generic`` is the
+    generic analysis of that same system when already computed (it is used
+    only when it is of ``mechanism`` with these drivers).
     """
     drivers = mechanism.driver_links if drivers is None else tuple(drivers)
     n, p5, p4 = counts(mechanism)
-    system = constraint_system(mechanism, _usable_drivers(mechanism, drivers))
-    generic = generic_rank(system)
-    geometric, notes, realization = _geometric(system)
+    ranks = _rank_analyses(mechanism, drivers, generic)
+    generic, geometric = ranks.generic, ranks.geometric
     redundant = [
         Redundancy(pid, mechanism.pair(pid).label, k, "structural", mechanism.pair(pid).line_no)
         for pid, k in sorted(generic.dependent_pairs.items())
     ]
+    redundant.extend(
+        Redundancy(pid, mechanism.pair(pid).label, k, "geometric", mechanism.pair(pid).line_no)
+        for pid, k in sorted(ranks.extra.items())
+    )
     geo_passive: dict[str, int] = {}
-    if geometric is not None and realization is not None:
-        extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
-        moved = nearby_pose(system, realization) if extra else None
-        if moved is not None and (regular := geometric_rank(system, moved)).rank > geometric.rank:
-            geometric, realization = regular, moved
-            extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
-            notes = (
-                *notes,
-                "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
-                "a linkage drawn folded flat): the geometric counts are those of a regular "
-                "pose reached from it by a small motion",
-            )
-        redundant.extend(
-            Redundancy(pid, mechanism.pair(pid).label, k, "geometric", mechanism.pair(pid).line_no)
-            for pid, k in sorted(extra.items())
-        )
-        geo_passive = _geometric_passive(system, realization)
+    if ranks.realization is not None:
+        geo_passive = _geometric_passive(ranks.system, ranks.realization)
     declared = {p.roller: 1 for p in mechanism.pairs if p.roller is not None}
     passive = []
     for link in mechanism.moving_links:
         d, g = declared.get(link, 0), geo_passive.get(link, 0)
         if d or g:
             passive.append(PassiveMotion(link, max(d, g), "roller" if d >= g else "geometric"))
-    mob = Mobility(n, p5, p4, tuple(redundant), tuple(passive), geometric is not None, notes)
+    mob = Mobility(n, p5, p4, tuple(redundant), tuple(passive), geometric is not None, ranks.notes)
     return mob, generic, geometric
+
+
+def rank_analyses(
+    mechanism: Mechanism, drivers: Sequence[str], *, generic: RankAnalysis | None = None
+) -> tuple[RankAnalysis, RankAnalysis | None]:
+    """The rank analyses of :func:`mobility_analysis` (generic, geometric or None) alone.
+
+    What the decomposition needs when the mobility itself is known: the
+    passive motions are not looked for.
+    """
+    ranks = _rank_analyses(mechanism, tuple(drivers), generic)
+    return ranks.generic, ranks.geometric
+
+
+@dataclass(frozen=True, slots=True)
+class _RankAnalyses:
+    """The generic and geometric analyses of a driven system, and what they add up to.
+
+    ``realization`` is the pose of ``geometric`` (the sketch, or a regular pose
+    near it), ``extra`` the geometric redundancy beyond the structural one.
+    """
+
+    system: ConstraintSystem
+    generic: RankAnalysis
+    geometric: RankAnalysis | None
+    realization: Realization | None
+    extra: dict[int, int]
+    notes: tuple[str, ...]
+
+
+def _rank_analyses(
+    mechanism: Mechanism, drivers: tuple[str, ...], generic: RankAnalysis | None
+) -> _RankAnalyses:
+    usable = _usable_drivers(mechanism, drivers)
+    if generic is not None and _is_system_of(generic, mechanism, usable):
+        system = generic.system
+    else:
+        system = constraint_system(mechanism, usable)
+        generic = generic_rank(system)
+    geometric, notes, realization = _geometric(system)
+    if geometric is None or realization is None:
+        return _RankAnalyses(system, generic, geometric, realization, {}, notes)
+    extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
+    moved = nearby_pose(system, realization) if extra else None
+    if moved is not None and (regular := geometric_rank(system, moved)).rank > geometric.rank:
+        geometric, realization = regular, moved
+        extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
+        notes = (
+            *notes,
+            "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
+            "a linkage drawn folded flat): the geometric counts are those of a regular "
+            "pose reached from it by a small motion",
+        )
+    return _RankAnalyses(system, generic, geometric, realization, extra, notes)
+
+
+def _is_system_of(analysis: RankAnalysis, mechanism: Mechanism, drivers: tuple[str, ...]) -> bool:
+    """Whether ``analysis`` is of ``mechanism``'s system driven by ``drivers``."""
+    system = analysis.system
+    return (
+        system.mechanism is mechanism
+        and len(system.row_kind) == system.n_pair_rows + len(drivers)
+        and system.row_link[system.n_pair_rows :] == drivers
+        and all(kind is RowKind.DRIVER for kind in system.row_kind[system.n_pair_rows :])
+    )
 
 
 def _extra_geometric(structural: dict[int, int], geometric: dict[int, int]) -> dict[int, int]:

@@ -37,7 +37,14 @@ from .rigidity.constraints import (
     constraint_system,
     sketch_realization,
 )
-from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank, null_space
+from .rigidity.rank import (
+    DENSE_LIMIT,
+    RankAnalysis,
+    dimensionless_jacobian,
+    generic_rank,
+    geometric_rank,
+    null_space,
+)
 from .rigidity.regularity import nearby_pose
 
 __all__ = [
@@ -118,34 +125,24 @@ def counts(mechanism: Mechanism) -> tuple[int, int, int]:
     return len(mechanism.moving_links), len(mechanism.pairs) - p4, p4
 
 
-def _geometric(
-    system: ConstraintSystem,
-) -> tuple[RankAnalysis | None, tuple[str, ...], Realization | None]:
+def _sketch_pose(system: ConstraintSystem) -> tuple[Realization | None, tuple[str, ...]]:
+    """The sketch's realization for the geometric check, or None and why not."""
     m = system.mechanism
     if not m.points:
-        return None, (), None
+        return None, ()
     if system.n_scalar_unknowns > DENSE_LIMIT:
-        return (
-            None,
-            (
-                f"the geometric check is limited to {DENSE_LIMIT} scalar unknowns "
-                f"({system.n_scalar_unknowns} here); only the structural count was used",
-            ),
-            None,
+        return None, (
+            f"the geometric check is limited to {DENSE_LIMIT} scalar unknowns "
+            f"({system.n_scalar_unknowns} here); only the structural count was used",
         )
     try:
-        realization = sketch_realization(system)
+        return sketch_realization(system), ()
     except MissingGeometry as exc:
-        return (
-            None,
-            (
-                "coordinates are incomplete, so the geometric check was skipped: "
-                + "; ".join(exc.reasons[:3])
-                + ("; ..." if len(exc.reasons) > 3 else ""),
-            ),
-            None,
+        return None, (
+            "coordinates are incomplete, so the geometric check was skipped: "
+            + "; ".join(exc.reasons[:3])
+            + ("; ..." if len(exc.reasons) > 3 else ""),
         )
-    return geometric_rank(system, realization), (), realization
 
 
 def mobility(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Mobility:
@@ -189,7 +186,7 @@ def mobility_analysis(
     )
     geo_passive: dict[str, int] = {}
     if ranks.realization is not None:
-        geo_passive = _geometric_passive(ranks.system, ranks.realization)
+        geo_passive = _geometric_passive(ranks.system, ranks.realization, ranks.jacobian)
     declared = {p.roller: 1 for p in mechanism.pairs if p.roller is not None}
     passive = []
     for link in mechanism.moving_links:
@@ -212,18 +209,27 @@ def rank_analyses(
     return ranks.generic, ranks.geometric
 
 
+_SINGULAR_SKETCH = (
+    "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
+    "a linkage drawn folded flat): the geometric counts are those of a regular "
+    "pose reached from it by a small motion"
+)
+
+
 @dataclass(frozen=True, slots=True)
 class _RankAnalyses:
     """The generic and geometric analyses of a driven system, and what they add up to.
 
     ``realization`` is the pose of ``geometric`` (the sketch, or a regular pose
-    near it), ``extra`` the geometric redundancy beyond the structural one.
+    near it) and ``jacobian`` the system's dimensionless Jacobian there;
+    ``extra`` is the geometric redundancy beyond the structural one.
     """
 
     system: ConstraintSystem
     generic: RankAnalysis
     geometric: RankAnalysis | None
     realization: Realization | None
+    jacobian: np.ndarray | None
     extra: dict[int, int]
     notes: tuple[str, ...]
 
@@ -237,21 +243,21 @@ def _rank_analyses(
     else:
         system = constraint_system(mechanism, usable)
         generic = generic_rank(system)
-    geometric, notes, realization = _geometric(system)
-    if geometric is None or realization is None:
-        return _RankAnalyses(system, generic, geometric, realization, {}, notes)
+    realization, notes = _sketch_pose(system)
+    if realization is None:
+        return _RankAnalyses(system, generic, None, None, None, {}, notes)
+    jacobian = dimensionless_jacobian(system, realization)[0]
+    geometric = geometric_rank(system, realization, jacobian=jacobian)
     extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
     moved = nearby_pose(system, realization) if extra else None
-    if moved is not None and (regular := geometric_rank(system, moved)).rank > geometric.rank:
-        geometric, realization = regular, moved
-        extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
-        notes = (
-            *notes,
-            "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
-            "a linkage drawn folded flat): the geometric counts are those of a regular "
-            "pose reached from it by a small motion",
-        )
-    return _RankAnalyses(system, generic, geometric, realization, extra, notes)
+    if moved is not None:
+        moved_jacobian = dimensionless_jacobian(system, moved)[0]
+        regular = geometric_rank(system, moved, jacobian=moved_jacobian)
+        if regular.rank > geometric.rank:
+            geometric, realization, jacobian = regular, moved, moved_jacobian
+            extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
+            notes = (*notes, _SINGULAR_SKETCH)
+    return _RankAnalyses(system, generic, geometric, realization, jacobian, extra, notes)
 
 
 def _is_system_of(analysis: RankAnalysis, mechanism: Mechanism, drivers: tuple[str, ...]) -> bool:
@@ -281,14 +287,18 @@ def _extra_geometric(structural: dict[int, int], geometric: dict[int, int]) -> d
     return dict(sorted(out.items()))
 
 
-def _geometric_passive(system: ConstraintSystem, realization: Realization) -> dict[str, int]:
+def _geometric_passive(
+    system: ConstraintSystem, realization: Realization, jacobian: np.ndarray | None
+) -> dict[str, int]:
     """Null-space directions (drivers fixed) that move one link only, per link.
+
+    ``jacobian`` is the system's dimensionless Jacobian at ``realization``.
 
     A link jointed to the ground that is not driven may turn (or slide) on
     its ground joint alone: that motion is a driver candidate's, counted in W
     as it is without coordinates, never a passive freedom.
     """
-    N = null_space(system, realization)
+    N = null_space(system, realization, jacobian=jacobian)
     if N.shape[1] == 0:
         return {}
     uo, _ = system.scalar_offsets()

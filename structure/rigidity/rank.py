@@ -295,9 +295,11 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     return dense_rank(system, random_realization(system, seed), method="dense")
 
 
-def geometric_rank(system: ConstraintSystem, realization: Realization) -> RankAnalysis:
+def geometric_rank(
+    system: ConstraintSystem, realization: Realization, *, jacobian: np.ndarray | None = None
+) -> RankAnalysis:
     """Rank analysis at the sketch pose (dense; see :func:`dense_rank`)."""
-    return dense_rank(system, realization, method="dense")
+    return dense_rank(system, realization, method="dense", jacobian=jacobian)
 
 
 def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
@@ -360,13 +362,20 @@ def dimensionless_jacobian(
     return J, length
 
 
-def dense_rank(system: ConstraintSystem, realization: Realization, method: str) -> RankAnalysis:
+def dense_rank(
+    system: ConstraintSystem,
+    realization: Realization,
+    method: str,
+    *,
+    jacobian: np.ndarray | None = None,
+) -> RankAnalysis:
     """Rank-revealing pass over the rows in order at ``realization``.
 
     Lengths are made dimensionless by the sketch's size
     (:func:`dimensionless_jacobian`), then each scalar row
     is kept when its component orthogonal to the rows kept so far exceeds
-    1e-8 of its norm.
+    1e-8 of its norm. ``jacobian`` is that dimensionless Jacobian (all rows)
+    when already computed; it is not changed.
     """
     n = system.n_scalar_unknowns
     if n > DENSE_LIMIT:
@@ -374,7 +383,7 @@ def dense_rank(system: ConstraintSystem, realization: Realization, method: str) 
             f"the mechanism has {n} scalar unknowns and a dependency the block analysis "
             f"cannot resolve; the dense rank pass is limited to {DENSE_LIMIT}"
         )
-    J, _ = dimensionless_jacobian(system, realization)
+    J = dimensionless_jacobian(system, realization)[0] if jacobian is None else jacobian
     _, ro = system.scalar_offsets()
     kept = _kept_rows(J)
     block_of = np.repeat(np.arange(len(system.row_size)), system.row_size).tolist()
@@ -451,14 +460,20 @@ def _independent_run(rows: np.ndarray, norms: np.ndarray, basis: np.ndarray) -> 
 
 
 def null_space(
-    system: ConstraintSystem, realization: Realization, rows: Sequence[int] | None = None
+    system: ConstraintSystem,
+    realization: Realization,
+    rows: Sequence[int] | None = None,
+    *,
+    jacobian: np.ndarray | None = None,
 ) -> np.ndarray:
     """Orthonormal basis (columns) of the null space of the given rows at ``realization``.
 
     The basis is in the sketch's own unit of length (see
     :func:`dimensionless_jacobian`): positions in units of :func:`sketch_scale`.
+    ``jacobian`` is the dimensionless Jacobian of those rows when already
+    computed; it is not changed.
     """
-    J, _ = dimensionless_jacobian(system, realization, rows)
+    J = dimensionless_jacobian(system, realization, rows)[0] if jacobian is None else jacobian
     n = system.n_scalar_unknowns
     if J.shape[0] == 0:
         return np.eye(n)

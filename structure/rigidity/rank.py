@@ -23,7 +23,7 @@ its dependent set.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -131,7 +131,11 @@ def _singular_blocks(
     The blocks' singular values are computed in one batched call
     (:func:`_singular_ratios`). Generic regularity depends only on a block's
     pattern, so when all blocks are checked (``which`` None) each pattern is
-    evaluated once: mechanisms repeat a few group shapes many times.
+    evaluated once: mechanisms repeat a few group shapes many times. A
+    pattern once found regular is regular for good (a polynomial that is
+    nonzero at one point is not identically zero), so it is remembered across
+    calls (:data:`_REGULAR_PATTERNS`); singular verdicts are never remembered,
+    since a random pose may be near-singular by chance and is checked again.
     """
     offsets, _ = system.scalar_offsets()
     uo = offsets.tolist()
@@ -147,7 +151,10 @@ def _singular_blocks(
         if len(units) == 1 and len(rows) == 1 and system.row_kind[rows[0]] in trivial:
             continue  # a single driver/probe row on one block is regular by construction
         if which is None:
-            first = representative.setdefault(_block_pattern(system, units, rows, assigned), b)
+            pattern = _block_pattern(system, units, rows, assigned)
+            if pattern in _REGULAR_PATTERNS:
+                continue
+            first = representative.setdefault(pattern, b)
             if first != b:
                 same_as[b] = first
                 continue
@@ -160,8 +167,23 @@ def _singular_blocks(
         ratios = _singular_ratios([a for _, a in evaluated]).tolist()
         bad.extend(b for (b, _), x in zip(evaluated, ratios, strict=True) if x <= _RANK_TOL)
     singular = set(bad)
+    if which is None:
+        _remember_regular(pattern for pattern, b in representative.items() if b not in singular)
     bad.extend(b for b, first in same_as.items() if first in singular)
     return sorted(bad)
+
+
+#: block patterns found regular at a random realization (see :func:`_singular_blocks`)
+_REGULAR_PATTERNS: dict[tuple, None] = {}
+#: patterns remembered at most (the oldest are forgotten first)
+_REGULAR_PATTERNS_LIMIT = 1 << 14
+
+
+def _remember_regular(patterns: Iterable[tuple]) -> None:
+    for pattern in patterns:
+        _REGULAR_PATTERNS[pattern] = None
+    while len(_REGULAR_PATTERNS) > _REGULAR_PATTERNS_LIMIT:
+        del _REGULAR_PATTERNS[next(iter(_REGULAR_PATTERNS))]
 
 
 def _singular_ratios(matrices: Sequence[list[list[float]]]) -> np.ndarray:

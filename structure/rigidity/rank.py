@@ -333,12 +333,15 @@ def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
     pts = [p for p in realization.point if p is not None]
     if not pts:
         return 1.0
-    arr = np.array(pts, dtype=float)
-    span = float(np.max(np.ptp(arr, axis=0))) if len(arr) > 1 else 0.0
+    xs = [float(p[0]) for p in pts]
+    ys = [float(p[1]) for p in pts]
+    if not all(map(math.isfinite, xs + ys)):
+        return 1.0  # no finite size: lengths are left as they are
+    span = max(max(xs) - min(xs), max(ys) - min(ys))
     if span > 0 and math.isfinite(span):
         return span
-    far = float(np.max(np.abs(arr)))
-    return far if far > 0 and math.isfinite(far) else 1.0
+    far = max(map(abs, xs + ys))
+    return far if far > 0 else 1.0
 
 
 def _angle_rows(system: ConstraintSystem, rows: Sequence[int]) -> list[bool]:
@@ -378,7 +381,8 @@ def dimensionless_jacobian(
     J = jacobian(system, realization, rows)
     length = sketch_scale(system, realization)
     uo, _ = system.scalar_offsets()
-    angle_cols = [int(uo[u]) for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
+    offsets = uo.tolist()
+    angle_cols = [offsets[u] for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
     J[:, angle_cols] /= length
     J[np.array(_angle_rows(system, rows), dtype=bool)] *= length
     return J, length
@@ -499,6 +503,12 @@ def null_space(
     n = system.n_scalar_unknowns
     if J.shape[0] == 0:
         return np.eye(n)
+    if J.shape[0] >= n > 0:
+        # the singular values alone cost a third of the factorization: when they
+        # leave no null space (the usual driven system), the vectors are not needed
+        s = np.linalg.svd(J, compute_uv=False)
+        if s[-1] > _RANK_TOL * max(1.0, s[0]):
+            return np.zeros((n, 0))
     _, s, vt = np.linalg.svd(J)
     rank = int(np.sum(s > _RANK_TOL * max(1.0, s[0] if len(s) else 1.0)))
     return vt[rank:].T

@@ -440,14 +440,14 @@ def _kept_rows(J: np.ndarray) -> list[int]:
     kept: list[int] = []
     i = 0
     while i < m:
-        directions = _independent_run(J[i:], norms[i:], basis) if n else basis[:0]
-        run = len(directions)
+        run, rest = _independent_run(J[i:], norms[i:], basis) if n else (0, J[i:])
+        kept.extend(range(i, i + run))
+        i += run
+        if i == m:
+            break  # the usual end: every row left was clearly independent
         if run:
-            basis = np.vstack([basis, directions])
-            kept.extend(range(i, i + run))
-            i += run
-            if i == m:
-                break
+            q, _ = np.linalg.qr(rest[:run].T)
+            basis = np.vstack([basis, q.T])
         v, norm = J[i], float(norms[i])
         if norm != 0.0:
             w = _project_out(v, basis)
@@ -472,17 +472,18 @@ def _project_out(rows: np.ndarray, basis: np.ndarray) -> np.ndarray:
     return rows - (rows @ basis.T) @ basis
 
 
-def _independent_run(rows: np.ndarray, norms: np.ndarray, basis: np.ndarray) -> np.ndarray:
-    """Orthonormal directions (rows) that the leading, clearly independent ``rows`` add.
+def _independent_run(
+    rows: np.ndarray, norms: np.ndarray, basis: np.ndarray
+) -> tuple[int, np.ndarray]:
+    """How many leading ``rows`` are clearly independent, and the rows less ``basis``.
 
     The run stops before the first row not clearly independent of ``basis``
-    and of the rows before it; it has as many directions as rows.
+    and of the rows before it (the triangular factor's diagonal tells).
     """
-    q, r = np.linalg.qr(_project_out(rows, basis).T)
-    diag = np.abs(np.diagonal(r))
+    rest = _project_out(rows, basis)
+    diag = np.abs(np.diagonal(np.linalg.qr(rest.T, mode="r")))
     clear = diag > _CLEARLY_INDEPENDENT * norms[: len(diag)]
-    run = len(diag) if bool(clear.all()) else int(np.argmin(clear))
-    return q[:, :run].T
+    return (len(diag) if bool(clear.all()) else int(np.argmin(clear))), rest
 
 
 def null_space(

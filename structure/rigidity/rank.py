@@ -123,10 +123,13 @@ def _singular_blocks(
     system: ConstraintSystem,
     blocks: list[list[int]],
     assigned: list[list[int]],
-    realization: Realization,
+    seed: int,
     which: Sequence[int] | None = None,
 ) -> list[int]:
     """Indices of the irreducible blocks whose square Jacobian is numerically singular.
+
+    The Jacobians are those at the random realization of ``seed``, drawn only
+    when some block has to be evaluated.
 
     The blocks' singular values are computed in one batched call
     (:func:`_singular_ratios`). Generic regularity depends only on a block's
@@ -145,6 +148,7 @@ def _singular_blocks(
     same_as: dict[int, int] = {}
     evaluated: list[tuple[int, list[list[float]]]] = []
     bad: list[int] = []
+    realization: Realization | None = None
     for b in range(len(blocks)) if which is None else which:
         units = blocks[b]
         rows = rows_of[b]
@@ -158,6 +162,8 @@ def _singular_blocks(
             if first != b:
                 same_as[b] = first
                 continue
+        if realization is None:
+            realization = random_realization(system, seed)
         a = _block_matrix(system, realization, units, rows, assigned, uo)
         if a is None:
             bad.append(b)
@@ -295,12 +301,10 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     for u, k in free:
         assigned.append([u] * k)
     blocks = irreducible_blocks(probed.row_adj, assigned, len(system.unknowns))
-    suspects = _singular_blocks(probed, blocks, assigned, random_realization(probed, seed))
+    suspects = _singular_blocks(probed, blocks, assigned, seed)
     if suspects:
         # a generic dependency persists at another random pose; a near-coincidence does not
-        suspects = _singular_blocks(
-            probed, blocks, assigned, random_realization(probed, seed + 1), suspects
-        )
+        suspects = _singular_blocks(probed, blocks, assigned, seed + 1, suspects)
     if not suspects:
         n_pairs = system.n_pair_rows
         rank = sum(len(a) for a in matcher.assigned[:n_pairs])

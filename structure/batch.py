@@ -217,6 +217,8 @@ def classify_batch(
         Dask asked for but not installed.
     """
     chunk = 1 if jobs <= 1 and not (scheduler or dask_local) else 64
+    if (scheduler or dask_local) and not isinstance(items, Sequence):
+        items = list(items)  # their number sizes the Dask tasks; items are small texts
     rows = ordered_map(
         classify_item, items, jobs=jobs, scheduler=scheduler, dask_local=dask_local, chunk=chunk
     )

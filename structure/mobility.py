@@ -37,10 +37,25 @@ from .rigidity.constraints import (
     constraint_system,
     sketch_realization,
 )
-from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank, null_space
+from .rigidity.rank import (
+    DENSE_LIMIT,
+    RankAnalysis,
+    dimensionless_jacobian,
+    generic_rank,
+    geometric_rank,
+    null_space,
+)
 from .rigidity.regularity import nearby_pose
 
-__all__ = ["Mobility", "PassiveMotion", "Redundancy", "counts", "mobility", "mobility_analysis"]
+__all__ = [
+    "Mobility",
+    "PassiveMotion",
+    "Redundancy",
+    "counts",
+    "mobility",
+    "mobility_analysis",
+    "rank_analyses",
+]
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,34 +125,24 @@ def counts(mechanism: Mechanism) -> tuple[int, int, int]:
     return len(mechanism.moving_links), len(mechanism.pairs) - p4, p4
 
 
-def _geometric(
-    system: ConstraintSystem,
-) -> tuple[RankAnalysis | None, tuple[str, ...], Realization | None]:
+def _sketch_pose(system: ConstraintSystem) -> tuple[Realization | None, tuple[str, ...]]:
+    """The sketch's realization for the geometric check, or None and why not."""
     m = system.mechanism
     if not m.points:
-        return None, (), None
+        return None, ()
     if system.n_scalar_unknowns > DENSE_LIMIT:
-        return (
-            None,
-            (
-                f"the geometric check is limited to {DENSE_LIMIT} scalar unknowns "
-                f"({system.n_scalar_unknowns} here); only the structural count was used",
-            ),
-            None,
+        return None, (
+            f"the geometric check is limited to {DENSE_LIMIT} scalar unknowns "
+            f"({system.n_scalar_unknowns} here); only the structural count was used",
         )
     try:
-        realization = sketch_realization(system)
+        return sketch_realization(system), ()
     except MissingGeometry as exc:
-        return (
-            None,
-            (
-                "coordinates are incomplete, so the geometric check was skipped: "
-                + "; ".join(exc.reasons[:3])
-                + ("; ..." if len(exc.reasons) > 3 else ""),
-            ),
-            None,
+        return None, (
+            "coordinates are incomplete, so the geometric check was skipped: "
+            + "; ".join(exc.reasons[:3])
+            + ("; ..." if len(exc.reasons) > 3 else ""),
         )
-    return geometric_rank(system, realization), (), realization
 
 
 def mobility(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Mobility:
@@ -155,48 +160,115 @@ def _usable_drivers(mechanism: Mechanism, drivers: Sequence[str]) -> tuple[str, 
 
 
 def mobility_analysis(
-    mechanism: Mechanism, drivers: Sequence[str] | None = None
+    mechanism: Mechanism,
+    drivers: Sequence[str] | None = None,
+    *,
+    generic: RankAnalysis | None = None,
 ) -> tuple[Mobility, RankAnalysis, RankAnalysis | None]:
     """:func:`mobility` and the rank analyses behind it (generic, geometric or None).
 
     The analyses are of the system driven by ``drivers``; the decomposition
-    reuses them instead of building the system again.
+    reuses them instead of building the system again. ``generic`` is the
+    generic analysis of that same system when already computed (it is used
+    only when it is of ``mechanism`` with these drivers).
     """
     drivers = mechanism.driver_links if drivers is None else tuple(drivers)
     n, p5, p4 = counts(mechanism)
-    system = constraint_system(mechanism, _usable_drivers(mechanism, drivers))
-    generic = generic_rank(system)
-    geometric, notes, realization = _geometric(system)
+    ranks = _rank_analyses(mechanism, drivers, generic)
+    generic, geometric = ranks.generic, ranks.geometric
     redundant = [
         Redundancy(pid, mechanism.pair(pid).label, k, "structural", mechanism.pair(pid).line_no)
         for pid, k in sorted(generic.dependent_pairs.items())
     ]
+    redundant.extend(
+        Redundancy(pid, mechanism.pair(pid).label, k, "geometric", mechanism.pair(pid).line_no)
+        for pid, k in sorted(ranks.extra.items())
+    )
     geo_passive: dict[str, int] = {}
-    if geometric is not None and realization is not None:
-        extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
-        moved = nearby_pose(system, realization) if extra else None
-        if moved is not None and (regular := geometric_rank(system, moved)).rank > geometric.rank:
-            geometric, realization = regular, moved
-            extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
-            notes = (
-                *notes,
-                "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
-                "a linkage drawn folded flat): the geometric counts are those of a regular "
-                "pose reached from it by a small motion",
-            )
-        redundant.extend(
-            Redundancy(pid, mechanism.pair(pid).label, k, "geometric", mechanism.pair(pid).line_no)
-            for pid, k in sorted(extra.items())
-        )
-        geo_passive = _geometric_passive(system, realization)
+    if ranks.realization is not None:
+        geo_passive = _geometric_passive(ranks.system, ranks.realization, ranks.jacobian)
     declared = {p.roller: 1 for p in mechanism.pairs if p.roller is not None}
     passive = []
     for link in mechanism.moving_links:
         d, g = declared.get(link, 0), geo_passive.get(link, 0)
         if d or g:
             passive.append(PassiveMotion(link, max(d, g), "roller" if d >= g else "geometric"))
-    mob = Mobility(n, p5, p4, tuple(redundant), tuple(passive), geometric is not None, notes)
+    mob = Mobility(n, p5, p4, tuple(redundant), tuple(passive), geometric is not None, ranks.notes)
     return mob, generic, geometric
+
+
+def rank_analyses(
+    mechanism: Mechanism, drivers: Sequence[str], *, generic: RankAnalysis | None = None
+) -> tuple[RankAnalysis, RankAnalysis | None]:
+    """The rank analyses of :func:`mobility_analysis` (generic, geometric or None) alone.
+
+    What the decomposition needs when the mobility itself is known: the
+    passive motions are not looked for.
+    """
+    ranks = _rank_analyses(mechanism, tuple(drivers), generic)
+    return ranks.generic, ranks.geometric
+
+
+_SINGULAR_SKETCH = (
+    "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
+    "a linkage drawn folded flat): the geometric counts are those of a regular "
+    "pose reached from it by a small motion"
+)
+
+
+@dataclass(frozen=True, slots=True)
+class _RankAnalyses:
+    """The generic and geometric analyses of a driven system, and what they add up to.
+
+    ``realization`` is the pose of ``geometric`` (the sketch, or a regular pose
+    near it) and ``jacobian`` the system's dimensionless Jacobian there;
+    ``extra`` is the geometric redundancy beyond the structural one.
+    """
+
+    system: ConstraintSystem
+    generic: RankAnalysis
+    geometric: RankAnalysis | None
+    realization: Realization | None
+    jacobian: np.ndarray | None
+    extra: dict[int, int]
+    notes: tuple[str, ...]
+
+
+def _rank_analyses(
+    mechanism: Mechanism, drivers: tuple[str, ...], generic: RankAnalysis | None
+) -> _RankAnalyses:
+    usable = _usable_drivers(mechanism, drivers)
+    if generic is not None and _is_system_of(generic, mechanism, usable):
+        system = generic.system
+    else:
+        system = constraint_system(mechanism, usable)
+        generic = generic_rank(system)
+    realization, notes = _sketch_pose(system)
+    if realization is None:
+        return _RankAnalyses(system, generic, None, None, None, {}, notes)
+    jacobian = dimensionless_jacobian(system, realization)[0]
+    geometric = geometric_rank(system, realization, jacobian=jacobian)
+    extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
+    moved = nearby_pose(system, realization) if extra else None
+    if moved is not None:
+        moved_jacobian = dimensionless_jacobian(system, moved)[0]
+        regular = geometric_rank(system, moved, jacobian=moved_jacobian)
+        if regular.rank > geometric.rank:
+            geometric, realization, jacobian = regular, moved, moved_jacobian
+            extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
+            notes = (*notes, _SINGULAR_SKETCH)
+    return _RankAnalyses(system, generic, geometric, realization, jacobian, extra, notes)
+
+
+def _is_system_of(analysis: RankAnalysis, mechanism: Mechanism, drivers: tuple[str, ...]) -> bool:
+    """Whether ``analysis`` is of ``mechanism``'s system driven by ``drivers``."""
+    system = analysis.system
+    return (
+        system.mechanism is mechanism
+        and len(system.row_kind) == system.n_pair_rows + len(drivers)
+        and system.row_link[system.n_pair_rows :] == drivers
+        and all(kind is RowKind.DRIVER for kind in system.row_kind[system.n_pair_rows :])
+    )
 
 
 def _extra_geometric(structural: dict[int, int], geometric: dict[int, int]) -> dict[int, int]:
@@ -215,14 +287,18 @@ def _extra_geometric(structural: dict[int, int], geometric: dict[int, int]) -> d
     return dict(sorted(out.items()))
 
 
-def _geometric_passive(system: ConstraintSystem, realization: Realization) -> dict[str, int]:
+def _geometric_passive(
+    system: ConstraintSystem, realization: Realization, jacobian: np.ndarray | None
+) -> dict[str, int]:
     """Null-space directions (drivers fixed) that move one link only, per link.
+
+    ``jacobian`` is the system's dimensionless Jacobian at ``realization``.
 
     A link jointed to the ground that is not driven may turn (or slide) on
     its ground joint alone: that motion is a driver candidate's, counted in W
     as it is without coordinates, never a passive freedom.
     """
-    N = null_space(system, realization)
+    N = null_space(system, realization, jacobian=jacobian)
     if N.shape[1] == 0:
         return {}
     uo, _ = system.scalar_offsets()
@@ -230,16 +306,33 @@ def _geometric_passive(system: ConstraintSystem, realization: Realization) -> di
     driven = {
         system.row_link[r] for r, kind in enumerate(system.row_kind) if kind is RowKind.DRIVER
     }
+    links = m.moving_links
+    offsets = uo.tolist()
+    placements = [(offsets[system.pos[x]], offsets[system.ang[x]]) for x in links]
+    ranks = _ranks_without_links(N, placements)
     out: dict[str, int] = {}
-    for link in m.moving_links:
-        p0 = int(uo[system.pos[link]])
-        cols = [p0, p0 + 1, int(uo[system.ang[link]])]
-        rest = np.delete(N, cols, axis=0)
-        s = np.linalg.svd(rest, compute_uv=False) if rest.size else np.zeros(0)
-        rank = int(np.sum(s > 1e-8))
+    for link, rank in zip(links, ranks, strict=True):
         k = N.shape[1] - rank
         if k and link not in driven and m.ground_joint(link) is not None:
             k -= 1  # the candidate's own motion on its ground joint
         if k:
             out[link] = k
     return out
+
+
+def _ranks_without_links(N: np.ndarray, columns: Sequence[tuple[int, int]]) -> list[int]:
+    """Rank of ``N`` without the rows of each link's placement (position, angle).
+
+    ``columns`` holds each link's (position, angle) scalar offsets. The
+    matrices are all of one shape, so one batched SVD serves every link.
+    """
+    if not columns:
+        return []
+    keep = np.ones((len(columns), len(N)), dtype=bool)
+    for k, (p0, a0) in enumerate(columns):
+        keep[k, [p0, p0 + 1, a0]] = False
+    rest = np.stack([N[row] for row in keep])
+    if not rest.size:
+        return [0] * len(columns)
+    s = np.linalg.svd(rest, compute_uv=False)
+    return np.sum(s > 1e-8, axis=1).tolist()

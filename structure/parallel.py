@@ -5,6 +5,7 @@ whatever runs them: the calling process (``jobs=1``), a pool of ``jobs`` local
 processes, or a Dask cluster (``scheduler="tcp://HOST:PORT"``, or ``dask_local=N``
 for a LocalCluster of N worker processes started here). Items travel in chunks;
 ``function`` and the items must pickle (a module-level function and plain data).
+:func:`local_cluster` starts a LocalCluster that several jobs can share.
 
 Dask is the optional ``dask`` extra (``pip install 'assur[dask]'``): it is imported
 only when asked for, so that ``import structure`` stays light, and its absence is
@@ -13,14 +14,15 @@ only when asked for, so that ``import structure`` stays light, and its absence i
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import itertools
 import multiprocessing
 from collections import deque
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence, Sized
 from typing import Any, TypeVar
 
-__all__ = ["MissingExtraError", "ordered_map"]
+__all__ = ["MissingExtraError", "local_cluster", "ordered_map"]
 
 Item = TypeVar("Item")
 Result = TypeVar("Result")
@@ -29,6 +31,14 @@ Result = TypeVar("Result")
 #: chunks in flight per Dask worker: enough that no worker waits while the client
 #: takes the results in order
 _IN_FLIGHT = 32
+
+#: tasks per Dask worker when the number of items is known: few large tasks (each
+#: task costs the scheduler and the network a round trip), yet enough of them that
+#: a worker slowed by other work does not hold up the end of the job
+_TASKS_PER_WORKER = 8
+
+#: seconds to wait for a new LocalCluster's workers before submitting work
+_WORKER_WAIT = 60
 
 
 class MissingExtraError(ImportError):
@@ -68,7 +78,8 @@ def ordered_map(
     dask_local : int
         Start a Dask LocalCluster with this many single-threaded worker processes.
     chunk : int
-        Items sent to a worker at a time.
+        Items sent to a worker at a time. On Dask, when ``items`` has a length,
+        the chunks are larger if that makes about eight per worker.
 
     Raises
     ------
@@ -90,24 +101,50 @@ def ordered_map(
             yield function(item)
 
 
-def _dask_client(scheduler: str | None, dask_local: int) -> Any:
-    """A Dask client on ``scheduler`` or on a new LocalCluster (optional ``dask`` extra)."""
+def _distributed() -> Any:
+    """The ``dask.distributed`` module (the optional ``dask`` extra, imported on use)."""
     try:
-        from dask.distributed import Client, LocalCluster  # optional extra, imported on use
+        import dask.distributed as distributed  # optional extra, imported on use
     except ImportError as exc:
         raise MissingExtraError(
             "running on Dask needs dask[distributed]: pip install 'assur[dask]'"
         ) from exc
-    if scheduler:
-        return Client(scheduler)
-    cluster = LocalCluster(
-        n_workers=dask_local,
+    return distributed
+
+
+@contextlib.contextmanager
+def local_cluster(workers: int) -> Iterator[str]:
+    """A Dask LocalCluster of ``workers`` single-threaded processes: its scheduler's address.
+
+    Every worker is up when the address is given (otherwise the first one would
+    take all the first tasks); the cluster is closed on exit.
+
+    Raises
+    ------
+    MissingExtraError
+        Dask not installed.
+    """
+    distributed = _distributed()
+    cluster = distributed.LocalCluster(
+        n_workers=workers,
         threads_per_worker=1,
         processes=True,
         host="127.0.0.1",
         dashboard_address="127.0.0.1:0",
     )
-    return Client(cluster)
+    try:
+        with distributed.Client(cluster) as client:
+            client.wait_for_workers(workers, timeout=_WORKER_WAIT)
+        yield cluster.scheduler_address
+    finally:
+        cluster.close()
+
+
+def _chunk_size(items: Iterable[Any], chunk: int, workers: int) -> int:
+    """``chunk``, or larger to make about :data:`_TASKS_PER_WORKER` tasks per worker."""
+    if not isinstance(items, Sized):
+        return chunk
+    return max(chunk, -(-len(items) // (workers * _TASKS_PER_WORKER)))
 
 
 def _dask_map(
@@ -117,18 +154,19 @@ def _dask_map(
     dask_local: int,
     chunk: int,
 ) -> Iterator[Any]:
-    client = _dask_client(scheduler, dask_local)
+    if not scheduler:
+        with local_cluster(dask_local) as address:
+            yield from _dask_map(function, items, address, 0, chunk)
+        return
+    client = _distributed().Client(scheduler)
     try:
-        workers = max(1, len(client.scheduler_info().get("workers", {})), dask_local)
+        workers = max(1, len(client.scheduler_info().get("workers", {})))
         window: deque = deque()
-        for part in _chunks(items, chunk):
+        for part in _chunks(items, _chunk_size(items, chunk, workers)):
             window.append(client.submit(_apply_chunk, function, part, pure=False))
             if len(window) >= _IN_FLIGHT * workers:
                 yield from window.popleft().result()
         while window:
             yield from window.popleft().result()
     finally:
-        cluster = None if scheduler else client.cluster
         client.close()
-        if cluster is not None:
-            cluster.close()

@@ -21,11 +21,11 @@ from typing import TYPE_CHECKING, Any
 
 from .assur import AssurGroup, Decomposition, decompose, driver_candidates
 from .errors import DecompositionError, EdgeListError, MobilityError
-from .mobility import Mobility, mobility_analysis
+from .mobility import Mobility, mobility_analysis, rank_analyses
 from .model import Mechanism
 from .replacement import Replacement, replace_higher_pairs
 from .rigidity.constraints import constraint_system, sketch_problems
-from .rigidity.rank import generic_rank
+from .rigidity.rank import RankAnalysis, generic_rank
 from .utils import paused_gc
 
 if TYPE_CHECKING:
@@ -86,8 +86,12 @@ class StructuralReport:
         return f"<StructuralReport W={self.mobility.W} {self.formula}>"
 
 
-def _pick_drivers(replaced: Mechanism, w: int, exclude: set[str]) -> tuple[str, ...]:
+def _pick_drivers(
+    replaced: Mechanism, w: int, exclude: set[str]
+) -> tuple[tuple[str, ...], RankAnalysis | None]:
+    """Up to ``w`` independent drivers, and the generic analysis of the system they drive."""
     chosen: list[str] = []
+    accepted = None
     for link in driver_candidates(replaced):
         if len(chosen) == w:
             break
@@ -96,8 +100,8 @@ def _pick_drivers(replaced: Mechanism, w: int, exclude: set[str]) -> tuple[str, 
         trial = [*chosen, link]
         analysis = generic_rank(constraint_system(replaced, trial))
         if not analysis.dependent_drivers:
-            chosen = trial
-    return tuple(chosen)
+            chosen, accepted = trial, analysis
+    return tuple(chosen), accepted
 
 
 def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> StructuralReport:
@@ -132,6 +136,7 @@ def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralR
         raise MobilityError(f"W = {w}: the chain cannot move, {why} ({mob.formula})", mob)
     named = mechanism.driver_links
     chosen = not named
+    picked = None  # the generic analysis of the chosen drivers' system
     if named:
         if len(named) != w:
             raise MobilityError(
@@ -142,7 +147,7 @@ def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralR
         drivers_used = named
     else:
         virtual = {r.virtual_link for r in replacements}
-        drivers_used = _pick_drivers(replaced, w, virtual)
+        drivers_used, picked = _pick_drivers(replaced, w, virtual)
         if len(drivers_used) < w:
             raise MobilityError(
                 f"W = {w} but only {len(drivers_used)} link(s) joined to the ground can be "
@@ -150,11 +155,11 @@ def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralR
                 mob,
             )
     rmob = mob
-    if replacements or chosen:
-        # the rank analyses are reused by the decomposition: redo them for what it sees
-        replaced_mob, generic, geometric = mobility_analysis(replaced, drivers_used)
-        if replacements:
-            rmob = replaced_mob
+    # the rank analyses are reused by the decomposition: redo them for what it sees
+    if replacements:
+        rmob, generic, geometric = mobility_analysis(replaced, drivers_used, generic=picked)
+    elif chosen:
+        generic, geometric = rank_analyses(replaced, drivers_used, generic=picked)
     decomposition = decompose(replaced, drivers_used, analyses=(generic, geometric))
     return StructuralReport(
         mechanism, mob, replaced, rmob, replacements, tuple(drivers_used), chosen, decomposition

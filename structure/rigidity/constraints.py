@@ -25,6 +25,8 @@ generic rank with probability 1), :func:`sketch_realization` the file's pose.
 
 from __future__ import annotations
 
+import functools
+import itertools
 import math
 import random
 import zlib
@@ -105,8 +107,8 @@ class ConstraintSystem:
 
     def scalar_offsets(self) -> tuple[np.ndarray, np.ndarray]:
         """Offsets of each unknown block and each row block in scalar numbering."""
-        uo = np.concatenate([[0], np.cumsum([u.size for u in self.unknowns])]).astype(int)
-        ro = np.concatenate([[0], np.cumsum(self.row_size)]).astype(int)
+        uo = np.array([0, *itertools.accumulate(u.size for u in self.unknowns)], dtype=int)
+        ro = np.array([0, *itertools.accumulate(self.row_size)], dtype=int)
         return uo, ro
 
     def with_rows(
@@ -262,6 +264,21 @@ class Realization:
     direction: Sequence[tuple[float, float] | None]
 
 
+@functools.lru_cache(maxsize=1 << 16)
+def _generic_draw(seed: int, kind: str, key: tuple) -> tuple[float, float]:
+    """The random pair (a unit direction, or a point in [-1, 1]²) for ``key``.
+
+    A function of its arguments alone, so it is remembered: mechanisms share
+    link names, pin names and row numbers, and seeding a generator costs more
+    than the numbers it draws.
+    """
+    rng = random.Random(zlib.crc32(repr((seed, kind, key)).encode()))
+    if kind == "direction":
+        t = rng.uniform(0.0, 2.0 * math.pi)
+        return (math.cos(t), math.sin(t))
+    return (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))
+
+
 class _GenericTable(Sequence):
     """Random numbers drawn on demand, the same for the same key.
 
@@ -281,13 +298,7 @@ class _GenericTable(Sequence):
     def value(self, key: tuple) -> tuple[float, float]:
         found = self._cache.get(key)
         if found is None:
-            rng = random.Random(zlib.crc32(repr((self._seed, self._kind, key)).encode()))
-            if self._kind == "direction":
-                t = rng.uniform(0.0, 2.0 * math.pi)
-                found = (math.cos(t), math.sin(t))
-            else:
-                found = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))
-            self._cache[key] = found
+            found = self._cache[key] = _generic_draw(self._seed, self._kind, key)
         return found
 
     def __getitem__(self, r):  # type: ignore[override]
@@ -553,10 +564,16 @@ def jacobian(
     offsets, _ = system.scalar_offsets()
     uo = offsets.tolist()
     rows = range(len(system.row_kind)) if rows is None else rows
-    rows = list(rows)
-    starts = np.cumsum([0] + [system.row_size[r] for r in rows])
-    J = np.zeros((int(starts[-1]), int(offsets[-1])))
-    for i, r in enumerate(rows):
+    at: list[int] = []
+    cols: list[int] = []
+    values: list[float] = []
+    start = 0
+    for r in rows:
         for lr, col, value in row_entries(system, realization, r, uo):
-            J[starts[i] + lr, col] = value
+            at.append(start + lr)
+            cols.append(col)
+            values.append(value)
+        start += system.row_size[r]
+    J = np.zeros((start, uo[-1]))
+    J[at, cols] = values
     return J

@@ -23,7 +23,7 @@ its dependent set.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -123,15 +123,22 @@ def _singular_blocks(
     system: ConstraintSystem,
     blocks: list[list[int]],
     assigned: list[list[int]],
-    realization: Realization,
+    seed: int,
     which: Sequence[int] | None = None,
 ) -> list[int]:
     """Indices of the irreducible blocks whose square Jacobian is numerically singular.
 
-    Blocks of equal size are stacked and their singular values computed in
-    one batched call. Generic regularity depends only on a block's pattern,
-    so when all blocks are checked (``which`` None) each pattern is evaluated
-    once: mechanisms repeat a few group shapes many times.
+    The Jacobians are those at the random realization of ``seed``, drawn only
+    when some block has to be evaluated.
+
+    The blocks' singular values are computed in one batched call
+    (:func:`_singular_ratios`). Generic regularity depends only on a block's
+    pattern, so when all blocks are checked (``which`` None) each pattern is
+    evaluated once: mechanisms repeat a few group shapes many times. A
+    pattern once found regular is regular for good (a polynomial that is
+    nonzero at one point is not identically zero), so it is remembered across
+    calls (:data:`_REGULAR_PATTERNS`); singular verdicts are never remembered,
+    since a random pose may be near-singular by chance and is checked again.
     """
     offsets, _ = system.scalar_offsets()
     uo = offsets.tolist()
@@ -139,31 +146,67 @@ def _singular_blocks(
     trivial = (RowKind.DRIVER, RowKind.PROBE)
     representative: dict[tuple, int] = {}
     same_as: dict[int, int] = {}
-    by_size: dict[int, list[tuple[int, np.ndarray]]] = {}
+    evaluated: list[tuple[int, list[list[float]]]] = []
     bad: list[int] = []
+    realization: Realization | None = None
     for b in range(len(blocks)) if which is None else which:
         units = blocks[b]
         rows = rows_of[b]
         if len(units) == 1 and len(rows) == 1 and system.row_kind[rows[0]] in trivial:
             continue  # a single driver/probe row on one block is regular by construction
         if which is None:
-            first = representative.setdefault(_block_pattern(system, units, rows, assigned), b)
+            pattern = _block_pattern(system, units, rows, assigned)
+            if pattern in _REGULAR_PATTERNS:
+                continue
+            first = representative.setdefault(pattern, b)
             if first != b:
                 same_as[b] = first
                 continue
+        if realization is None:
+            realization = random_realization(system, seed)
         a = _block_matrix(system, realization, units, rows, assigned, uo)
         if a is None:
             bad.append(b)
         else:
-            by_size.setdefault(len(a), []).append((b, a))
-    for items in by_size.values():
-        stack = np.stack([a for _, a in items])
-        s = np.linalg.svd(stack, compute_uv=False)
-        ratio = s[:, -1] / np.maximum(1.0, s[:, 0])
-        bad.extend(b for (b, _), x in zip(items, ratio, strict=True) if x <= _RANK_TOL)
+            evaluated.append((b, a))
+    if evaluated:
+        ratios = _singular_ratios([a for _, a in evaluated]).tolist()
+        bad.extend(b for (b, _), x in zip(evaluated, ratios, strict=True) if x <= _RANK_TOL)
     singular = set(bad)
+    if which is None:
+        _remember_regular(pattern for pattern, b in representative.items() if b not in singular)
     bad.extend(b for b, first in same_as.items() if first in singular)
     return sorted(bad)
+
+
+#: block patterns found regular at a random realization (see :func:`_singular_blocks`)
+_REGULAR_PATTERNS: dict[tuple, None] = {}
+#: patterns remembered at most (the oldest are forgotten first)
+_REGULAR_PATTERNS_LIMIT = 1 << 14
+
+
+def _remember_regular(patterns: Iterable[tuple]) -> None:
+    for pattern in patterns:
+        _REGULAR_PATTERNS[pattern] = None
+    while len(_REGULAR_PATTERNS) > _REGULAR_PATTERNS_LIMIT:
+        del _REGULAR_PATTERNS[next(iter(_REGULAR_PATTERNS))]
+
+
+def _singular_ratios(matrices: Sequence[list[list[float]]]) -> np.ndarray:
+    """Smallest over largest singular value (at least 1) of each square matrix.
+
+    The matrices are stacked, each padded to the largest size with an identity
+    block, for a single batched SVD: the padding adds singular values 1, which
+    leaves the ratio unchanged whenever it is below 1 (the only place where
+    it is compared with the rank tolerance).
+    """
+    size = max(len(a) for a in matrices)
+    stack = np.zeros((len(matrices), size, size))
+    stack[:, range(size), range(size)] = 1.0
+    for k, a in enumerate(matrices):
+        stack[k, : len(a), : len(a)] = a
+    s = np.linalg.svd(stack, compute_uv=False)
+    return s[:, -1] / np.maximum(1.0, s[:, 0])
 
 
 def _rows_of_blocks(
@@ -214,14 +257,14 @@ def _block_matrix(
     rows: list[int],
     assigned: list[list[int]],
     uo: list[int],
-) -> np.ndarray | None:
+) -> list[list[float]] | None:
     """The block's square Jacobian at ``realization``, or None when its rows do not fill it."""
     cols: dict[int, int] = {}
     for u in units:
         for k in range(system.unknowns[u].size):
             cols[uo[u] + k] = len(cols)
     size = len(cols)
-    a = np.zeros((size, size))
+    a = [[0.0] * size for _ in range(size)]
     i = 0
     for r in rows:
         matched = len(assigned[r])
@@ -233,9 +276,9 @@ def _block_matrix(
             if j is not None:
                 # a half-matched row block stands for one generic combination of its rows
                 if whole:
-                    a[i + lr, j] += value
+                    a[i + lr][j] += value
                 else:
-                    a[i, j] += (1.0, 0.61)[lr] * value
+                    a[i][j] += (1.0, 0.61)[lr] * value
         i += matched
     return a if i == size else None
 
@@ -258,12 +301,10 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     for u, k in free:
         assigned.append([u] * k)
     blocks = irreducible_blocks(probed.row_adj, assigned, len(system.unknowns))
-    suspects = _singular_blocks(probed, blocks, assigned, random_realization(probed, seed))
+    suspects = _singular_blocks(probed, blocks, assigned, seed)
     if suspects:
         # a generic dependency persists at another random pose; a near-coincidence does not
-        suspects = _singular_blocks(
-            probed, blocks, assigned, random_realization(probed, seed + 1), suspects
-        )
+        suspects = _singular_blocks(probed, blocks, assigned, seed + 1, suspects)
     if not suspects:
         n_pairs = system.n_pair_rows
         rank = sum(len(a) for a in matcher.assigned[:n_pairs])
@@ -280,9 +321,11 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     return dense_rank(system, random_realization(system, seed), method="dense")
 
 
-def geometric_rank(system: ConstraintSystem, realization: Realization) -> RankAnalysis:
+def geometric_rank(
+    system: ConstraintSystem, realization: Realization, *, jacobian: np.ndarray | None = None
+) -> RankAnalysis:
     """Rank analysis at the sketch pose (dense; see :func:`dense_rank`)."""
-    return dense_rank(system, realization, method="dense")
+    return dense_rank(system, realization, method="dense", jacobian=jacobian)
 
 
 def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
@@ -294,12 +337,15 @@ def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
     pts = [p for p in realization.point if p is not None]
     if not pts:
         return 1.0
-    arr = np.array(pts, dtype=float)
-    span = float(np.max(np.ptp(arr, axis=0))) if len(arr) > 1 else 0.0
+    xs = [float(p[0]) for p in pts]
+    ys = [float(p[1]) for p in pts]
+    if not all(map(math.isfinite, xs + ys)):
+        return 1.0  # no finite size: lengths are left as they are
+    span = max(max(xs) - min(xs), max(ys) - min(ys))
     if span > 0 and math.isfinite(span):
         return span
-    far = float(np.max(np.abs(arr)))
-    return far if far > 0 and math.isfinite(far) else 1.0
+    far = max(map(abs, xs + ys))
+    return far if far > 0 else 1.0
 
 
 def _angle_rows(system: ConstraintSystem, rows: Sequence[int]) -> list[bool]:
@@ -339,19 +385,27 @@ def dimensionless_jacobian(
     J = jacobian(system, realization, rows)
     length = sketch_scale(system, realization)
     uo, _ = system.scalar_offsets()
-    angle_cols = [int(uo[u]) for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
+    offsets = uo.tolist()
+    angle_cols = [offsets[u] for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
     J[:, angle_cols] /= length
     J[np.array(_angle_rows(system, rows), dtype=bool)] *= length
     return J, length
 
 
-def dense_rank(system: ConstraintSystem, realization: Realization, method: str) -> RankAnalysis:
+def dense_rank(
+    system: ConstraintSystem,
+    realization: Realization,
+    method: str,
+    *,
+    jacobian: np.ndarray | None = None,
+) -> RankAnalysis:
     """Rank-revealing pass over the rows in order at ``realization``.
 
     Lengths are made dimensionless by the sketch's size
     (:func:`dimensionless_jacobian`), then each scalar row
     is kept when its component orthogonal to the rows kept so far exceeds
-    1e-8 of its norm.
+    1e-8 of its norm. ``jacobian`` is that dimensionless Jacobian (all rows)
+    when already computed; it is not changed.
     """
     n = system.n_scalar_unknowns
     if n > DENSE_LIMIT:
@@ -359,44 +413,107 @@ def dense_rank(system: ConstraintSystem, realization: Realization, method: str) 
             f"the mechanism has {n} scalar unknowns and a dependency the block analysis "
             f"cannot resolve; the dense rank pass is limited to {DENSE_LIMIT}"
         )
-    J, _ = dimensionless_jacobian(system, realization)
+    J = dimensionless_jacobian(system, realization)[0] if jacobian is None else jacobian
     _, ro = system.scalar_offsets()
-    basis = np.zeros((0, n))
-    kept: list[int] = []
+    kept = _kept_rows(J)
+    block_of = np.repeat(np.arange(len(system.row_size)), system.row_size).tolist()
     dependent: dict[int, int] = {}
-    for r in range(len(system.row_kind)):
-        for i in range(int(ro[r]), int(ro[r + 1])):
-            v = J[i]
-            norm = float(np.linalg.norm(v))
-            if norm == 0.0:
-                dependent[r] = dependent.get(r, 0) + 1
-                continue
-            w = v - basis.T @ (basis @ v)
-            w = w - basis.T @ (basis @ w)
-            wn = float(np.linalg.norm(w))
-            if wn <= _RANK_TOL * norm:
-                dependent[r] = dependent.get(r, 0) + 1
-            else:
-                basis = np.vstack([basis, w / wn])
-                kept.append(i)
+    kept_set = set(kept)
+    for i, r in enumerate(block_of):
+        if i not in kept_set:
+            dependent[r] = dependent.get(r, 0) + 1
     n_pair_scalar = int(ro[system.n_pair_rows])
     rank = sum(1 for i in kept if i < n_pair_scalar)
     free = [] if len(kept) == n else [(-1, n - len(kept))]
     return RankAnalysis(system, dependent, rank, n - rank, free, None, [], method)
 
 
+def _kept_rows(J: np.ndarray) -> list[int]:
+    """The rows of ``J`` kept in order: those not within 1e-8 (relative) of the span before.
+
+    A row is kept when its component orthogonal to the rows kept so far
+    exceeds ``1e-8`` of its norm. Runs of clearly independent rows (that
+    component above ``1e-6`` of the norm) are found at once by a QR
+    factorization of what is left of the rows; the first row of a run that
+    is not clearly independent is decided on its own by projecting it out
+    of the kept rows twice, exactly as a row-by-row pass would.
+    """
+    m, n = J.shape
+    norms = np.linalg.norm(J, axis=1)
+    basis = np.zeros((0, n))
+    kept: list[int] = []
+    i = 0
+    while i < m:
+        run, rest = _independent_run(J[i:], norms[i:], basis) if n else (0, J[i:])
+        kept.extend(range(i, i + run))
+        i += run
+        if i == m:
+            break  # the usual end: every row left was clearly independent
+        if run:
+            q, _ = np.linalg.qr(rest[:run].T)
+            basis = np.vstack([basis, q.T])
+        v, norm = J[i], float(norms[i])
+        if norm != 0.0:
+            w = _project_out(v, basis)
+            wn = float(np.linalg.norm(w))
+            if wn > _RANK_TOL * norm:
+                basis = np.vstack([basis, w / wn])
+                kept.append(i)
+        i += 1
+    return kept
+
+
+#: a row whose component orthogonal to the rows before exceeds this share of its
+#: norm is independent beyond doubt (the rank tolerance is 1e-8)
+_CLEARLY_INDEPENDENT = 1e-6
+
+
+def _project_out(rows: np.ndarray, basis: np.ndarray) -> np.ndarray:
+    """``rows`` less their components on the orthonormal rows of ``basis`` (twice, for accuracy)."""
+    if not len(basis):
+        return rows
+    rows = rows - (rows @ basis.T) @ basis
+    return rows - (rows @ basis.T) @ basis
+
+
+def _independent_run(
+    rows: np.ndarray, norms: np.ndarray, basis: np.ndarray
+) -> tuple[int, np.ndarray]:
+    """How many leading ``rows`` are clearly independent, and the rows less ``basis``.
+
+    The run stops before the first row not clearly independent of ``basis``
+    and of the rows before it (the triangular factor's diagonal tells).
+    """
+    rest = _project_out(rows, basis)
+    diag = np.abs(np.diagonal(np.linalg.qr(rest.T, mode="r")))
+    clear = diag > _CLEARLY_INDEPENDENT * norms[: len(diag)]
+    return (len(diag) if bool(clear.all()) else int(np.argmin(clear))), rest
+
+
 def null_space(
-    system: ConstraintSystem, realization: Realization, rows: Sequence[int] | None = None
+    system: ConstraintSystem,
+    realization: Realization,
+    rows: Sequence[int] | None = None,
+    *,
+    jacobian: np.ndarray | None = None,
 ) -> np.ndarray:
     """Orthonormal basis (columns) of the null space of the given rows at ``realization``.
 
     The basis is in the sketch's own unit of length (see
     :func:`dimensionless_jacobian`): positions in units of :func:`sketch_scale`.
+    ``jacobian`` is the dimensionless Jacobian of those rows when already
+    computed; it is not changed.
     """
-    J, _ = dimensionless_jacobian(system, realization, rows)
+    J = dimensionless_jacobian(system, realization, rows)[0] if jacobian is None else jacobian
     n = system.n_scalar_unknowns
     if J.shape[0] == 0:
         return np.eye(n)
+    if J.shape[0] >= n > 0:
+        # the singular values alone cost a third of the factorization: when they
+        # leave no null space (the usual driven system), the vectors are not needed
+        s = np.linalg.svd(J, compute_uv=False)
+        if s[-1] > _RANK_TOL * max(1.0, s[0]):
+            return np.zeros((n, 0))
     _, s, vt = np.linalg.svd(J)
     rank = int(np.sum(s > _RANK_TOL * max(1.0, s[0] if len(s) else 1.0)))
     return vt[rank:].T

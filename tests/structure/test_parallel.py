@@ -15,7 +15,7 @@ import pytest
 from kinematics.cli.main import main
 from structure.atlas import atlas
 from structure.batch import batch_items, classify_batch
-from structure.parallel import MissingExtraError, ordered_map
+from structure.parallel import MissingExtraError, local_cluster, ordered_map
 
 ROOT = Path(__file__).resolve().parents[2]
 FIXTURE_FILES = sorted(str(p) for p in (ROOT / "fixtures").glob("*.edges"))
@@ -73,3 +73,15 @@ def test_dask_local_cluster_from_the_command_line(capsys):
     local = capsys.readouterr().out
     assert main(["atlas", "--links", "6", "--dask-local", "2"]) == 0
     assert capsys.readouterr().out == local
+
+
+def test_local_cluster_has_every_worker_up_and_large_tasks_keep_the_order():
+    distributed = pytest.importorskip("dask.distributed")
+    items = list(batch_items(FIXTURE_FILES)) * 3  # several items per task
+    with local_cluster(2) as address:
+        with distributed.Client(address) as client:
+            assert len(client.scheduler_info()["workers"]) == 2
+        assert list(classify_batch(items, scheduler=address)) == list(classify_batch(items))
+        assert list(ordered_map(_square, range(101), scheduler=address)) == [
+            x * x for x in range(101)
+        ]

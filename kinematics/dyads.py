@@ -347,13 +347,10 @@ def _circle_circle(
 ) -> tuple:
     """``(x, y, vx, vy, ax, ay)`` of an RRR dyad's joint C from its pins B and D.
 
-    C is at distance √len1 from B and √len2 from D, on the ``side`` of BD:
-    with ``e = D − B``, ``C = B + a·e ± b·J·e`` where ``a·|e|`` is C's distance
-    along BD from B, ``(|e|² + len1 − len2)/(2|e|)``, and ``b·|e|`` its height
-    over BD, ``√(len1 − (a·|e|)²)``. Its rates follow by :func:`_rrr_rates`
-    (None for positions only). Written with in-place operations on a few
-    arrays: at 10^5 poses, fresh temporaries cost more (in page faults and
-    cache misses) than the arithmetic.
+    C is at distance √len1 from B and √len2 from D, on the ``side`` of BD;
+    its rates follow by :func:`_rrr_rates` (None for positions only).
+    Written with in-place operations on a few arrays: at 10^5 poses, fresh
+    temporaries cost more (in page faults and cache misses) than the arithmetic.
     """
     step, inputs, tol = solve.step, solve.inputs, _tolerance(solve.plan)
     bx, by = pin_b[:2]
@@ -363,40 +360,42 @@ def _circle_circle(
     d2 = ex * ex
     t = ey * ey
     d2 += t
-    q = np.reciprocal(d2)
-    a = np.multiply(q, 0.5 * (len1 - len2))
-    a += 0.5
-    h2 = np.multiply(a, a, out=t)  # the height squared, len1 − (a·|e|)²
-    h2 *= d2
-    np.subtract(len1, h2, out=h2)
-    low = h2.min()
-    if not low >= -tol:  # NaN too: pins that coincide (|e| = 0) with unequal links
-        raise _not_assembled(step, solve.plan, inputs, ~(h2 >= -tol))
+    inv = np.sqrt(d2)
+    np.reciprocal(inv, out=inv)
+    along = d2
+    along += len1 - len2
+    along *= inv
+    along *= 0.5
+    h = np.multiply(along, along, out=t)
+    np.subtract(len1, h, out=h)
+    low = h.min()
+    if not low >= -tol:  # NaN too: pins that coincide with unequal links
+        raise _not_assembled(step, solve.plan, inputs, ~(h >= -tol))
     if low < 0.0:
-        np.maximum(h2, 0.0, out=h2)
-    _watch_dips(solve, h2)
-    b = np.multiply(h2, q, out=q)
-    np.sqrt(b, out=b)
-    if not solve.rates:  # |C − B|·|C − D|·sine = |BD|·height = b·|e|²: the dead centres from b
-        _dead_height(solve, b, d2, len1, len2)
-    r1y = np.multiply(a, ey, out=d2)  # C − B
-    r1x = np.multiply(a, ex, out=a)
-    np.multiply(b, ex, out=t)
+        np.maximum(h, 0.0, out=h)
+    _watch_dips(solve, h)
+    np.sqrt(h, out=h)
+    if not solve.rates:  # |C − B|·|C − D|·sine = |BD|·h: the dead centres from h alone
+        _dead_height(solve, h, inv, len1, len2)
+    h *= inv
+    along *= inv
+    r1y = np.multiply(along, ey, out=inv)  # C − B, the side's sign taken by adding or not
+    r1x = np.multiply(along, ex, out=along)
+    ey *= h
+    ex *= h
     if side > 0:
-        r1y += t
+        r1x -= ey
+        r1y += ex
     else:
-        r1y -= t
-    np.multiply(b, ey, out=t)
-    if side > 0:
-        r1x -= t
-    else:
-        r1x += t
+        r1x += ey
+        r1y -= ex
     cx, cy = np.add(bx, r1x, out=ex), np.add(by, r1y, out=ey)
     if not solve.rates:
         return cx, cy, None, None, None, None
     r2x, r2y = cx - dx, cy - dy  # C − D
-    det = np.multiply(r1x, r2y, out=b)
-    det -= np.multiply(r1y, r2x, out=t)
+    det = np.multiply(r1x, r2y, out=h)
+    t = np.multiply(r1y, r2x)
+    det -= t
     scale = _inverse_lengths(len1, len2)
     if np.abs(det).min() * scale <= DEAD_CENTRE:
         _dead_centre(step, solve.plan, inputs, det * scale)
@@ -408,21 +407,19 @@ def _inverse_lengths(len1: float, len2: float) -> float:
     return 1.0 / (math.sqrt(len1) * math.sqrt(len2))
 
 
-def _dead_height(
-    solve: _FrameSolve, b: np.ndarray, d2: np.ndarray, len1: float, len2: float
-) -> None:
-    """The dead-centre check of an RRR dyad from C's height over BD, ``b·|BD|`` (``d2`` = |BD|²).
+def _dead_height(solve: _FrameSolve, h: np.ndarray, inv, len1: float, len2: float) -> None:
+    """The dead-centre check of an RRR dyad from C's height ``h`` over BD (``inv`` = 1/|BD|).
 
-    The sine of the transmission angle is |BD|·height/(|BC|·|CD|) = b·d2/(|BC|·|CD|);
-    the product of the two smallest factors bounds it from below, so most sweeps
-    need no pass for the product.
+    The sine of the transmission angle is |BD|·h/(|BC|·|CD|); the smallest
+    height over the largest ``inv`` bounds it from below, so most sweeps need
+    no pass for the quotient.
     """
     scale = _inverse_lengths(len1, len2)
-    if b.min() * d2.min() * scale > DEAD_CENTRE:
+    if h.min() / inv.max() * scale > DEAD_CENTRE:
         return
-    sine = b * d2
-    sine *= scale
-    _dead_centre(solve.step, solve.plan, solve.inputs, sine)
+    sine = h / inv
+    if sine.min() * scale <= DEAD_CENTRE:
+        _dead_centre(solve.step, solve.plan, solve.inputs, sine * scale)
 
 
 def _rrr_rates(

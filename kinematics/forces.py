@@ -30,6 +30,7 @@ reported relative to the largest term.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -154,7 +155,7 @@ def _applied(plan: SolvePlan, where: _Where) -> dict[str, np.ndarray]:
             continue
         link = load.link
         if link not in out:
-            out[link] = np.zeros((n, 3))
+            out[link] = _load_columns(n)
         total = out[link]
         if load.kind == "moment":
             total[:, 2] += load.values[0]
@@ -344,7 +345,7 @@ def _forces_once(
     moments: dict[str, np.ndarray] = {}
     balancing_force = None
     balance = {x.link: x for x in m.loads if x.kind == "balance"}
-    power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
+    power = [_power(where, link, value) for link, value in applied.items()]
     for d in plan.drivers:
         load = balance.get(d.link)
         crank = _crank_balance(plan, where, d, load, applied, carried)
@@ -467,6 +468,33 @@ class _Where:
 _ORIGIN = np.zeros(2)
 
 
+def _power(where: _Where, link: str, value: np.ndarray) -> np.ndarray:
+    """The power of a generalized load ``value`` (Fx, Fy, M about the frame origin) on a link.
+
+    For a link with a frame, ``v_O = v_R + ω·J·(O − R)`` (R the frame's
+    reference point) gives ``P = F·v_R + ω·(M + (O − R) × F)``: no (N, 3)
+    velocity columns and no rotation needed.
+    """
+    frame = where.motion.frames.get(link)
+    if frame is None or frame.vx is None:
+        return np.einsum("ni,ni->n", value, where.motion.qd[link])
+    ox, oy = where.position(link, _ORIGIN)
+    fx, fy = value[:, 0], value[:, 1]
+    arm = np.subtract(ox, frame.x) * fy
+    arm -= np.subtract(oy, frame.y) * fx
+    arm += value[:, 2]
+    arm *= frame.omega
+    out = fx * frame.vx
+    out += fy * frame.vy
+    out += arm
+    return out
+
+
+def _load_columns(n: int) -> np.ndarray:
+    """A zero generalized load (N, 3) whose columns Fx, Fy, M are each contiguous."""
+    return np.zeros((3, n)).T
+
+
 def _load_about(where: _Where, link: str, total: np.ndarray, px, py) -> tuple:
     """A link's generalized load (about its frame origin) as ``(Fx, Fy, M about (px, py))``."""
     ox, oy = where.position(link, _ORIGIN)
@@ -482,7 +510,7 @@ def _carry(where: _Where, carried: dict, link: str, fx, fy, px, py, couple=0.0) 
     moment = (px - ox) * fy - (py - oy) * fx + couple
     value = carried.get(link)  # the pass's own arrays: added to in place
     if value is None:
-        value = carried[link] = np.zeros((where.motion.inputs.shape[0], 3))
+        value = carried[link] = _load_columns(where.motion.inputs.shape[0])
     value[:, 0] += fx
     value[:, 1] += fy
     value[:, 2] += moment
@@ -535,8 +563,11 @@ def _closed_dyad(
         value[:, 0] = fx
         value[:, 1] = fy
         kind = "R" if eq.kind == "HINGE" else "P"
-        out.append((equation_point(m, eq), (eq.a, eq.b), kind, value, np.broadcast_to(
-            np.asarray(couple, dtype=float), (n,)).copy()))
+        if isinstance(couple, float) and couple == 0.0 and math.copysign(1.0, couple) > 0:
+            couples = np.zeros(n)  # left untouched until read
+        else:
+            couples = np.broadcast_to(np.asarray(couple, dtype=float), (n,)).copy()
+        out.append((equation_point(m, eq), (eq.a, eq.b), kind, value, couples))
     return out
 
 
@@ -696,9 +727,11 @@ def _driver_balance(
 
 def _residual(power: list[np.ndarray], n: int) -> np.ndarray:
     """The virtual-power check: |Σ powers| relative to the largest term, at every pose."""
-    terms = np.abs(np.array(power)) if power else np.zeros((1, n))
-    scale = terms.max(axis=0)
-    total_power = np.abs(np.sum(np.array(power), axis=0)) if power else np.zeros(n)
+    if not power:
+        return np.zeros(n)
+    terms = np.array(power)
+    scale = np.maximum(terms.max(axis=0), -terms.min(axis=0))  # the largest |term|
+    total_power = np.abs(np.sum(terms, axis=0))
     return np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
 
 

@@ -84,6 +84,7 @@ def laid_out(layout: PointLayout) -> Iterator[PointLayout]:
         yield layout
     finally:
         _LAYOUT.reset(token)
+        layout.owner = None  # the owner refers to the layout: no cycle to wait for the collector
 
 
 class PinCache(dict):

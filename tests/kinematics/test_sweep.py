@@ -350,3 +350,18 @@ def _fixture(name: str):
     from ..conftest import FIXTURES
 
     return FIXTURES / name
+
+
+def test_a_kept_sweep_is_never_overwritten_by_the_next_one():
+    # the next sweep may reuse the memory of a dropped one, never of one still held
+    plan = make_plan(analyze(read_edgelist(_fixture("jansen.edges"))))
+    kept = sweep(plan, steps=64)
+    before = {name: {k: v.copy() for k, v in q.items()} for name, q in kept.points.items()}
+    only_a_view = sweep(plan, steps=64).points["E"]["velocity"]
+    snapshot = only_a_view.copy()
+    for rates in (True, True, False):
+        sweep(plan, np.linspace(1.0, 2.0, 64), rates=rates)  # dropped at once
+    for name, values in kept.points.items():
+        for key, array in values.items():
+            np.testing.assert_array_equal(array, before[name][key])
+    np.testing.assert_array_equal(only_a_view, snapshot)

@@ -752,9 +752,13 @@ def _residual(power: list[np.ndarray], n: int) -> np.ndarray:
     """The virtual-power check: |Σ powers| relative to the largest term, at every pose."""
     if not power:
         return np.zeros(n)
-    terms = np.array(power)
-    scale = np.maximum(terms.max(axis=0), -terms.min(axis=0))  # the largest |term|
-    total_power = np.abs(np.sum(terms, axis=0))
+    # term by term, in order (as a sum over the stacked terms adds them), on two arrays
+    total_power = np.array(power[0], dtype=float)
+    scale = np.abs(total_power)
+    for term in power[1:]:
+        total_power += term
+        np.maximum(scale, np.abs(term), out=scale)  # the largest |term|
+    np.abs(total_power, out=total_power)
     return np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
 
 

@@ -20,8 +20,6 @@ import csv
 import io
 import math
 import os
-import sys
-import threading
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import partial
@@ -267,37 +265,6 @@ def _link_column(motion: Motion, link: str, key: str) -> np.ndarray:
     return (motion.qd if key == "omega" else motion.qdd)[link][:, 2]
 
 
-class _SpareBlock:
-    """The last block a sweep laid out, handed out again once nothing refers to it.
-
-    Memory the kernel gives afresh costs a page fault per page on its first
-    touch (about as much as the arithmetic of a sweep, on some machines);
-    a loop of sweeps that drops each result before the next reuses the same
-    block instead. The block is free when its only reference is this one
-    (every view of it, in a result or a motion, refers to it): its
-    ``sys.getrefcount`` then reads what that of ``_probe``, held the same
-    way, reads. At most one block is kept.
-    """
-
-    def __init__(self) -> None:
-        self._lock = threading.Lock()
-        self._block: np.ndarray | None = None
-        self._probe = np.empty(0)  # held as the block is: what a free block's count reads
-
-    def take(self, shape: tuple[int, ...]) -> np.ndarray:
-        """A block of ``shape`` (uninitialised): the spare one when it is free, else a new one."""
-        with self._lock:
-            spare, probe = self._block, self._probe
-            free = sys.getrefcount(probe)
-            if spare is not None and spare.shape == shape and sys.getrefcount(spare) == free:
-                return spare
-            self._block = block = np.empty(shape)
-            return block
-
-
-_fresh_block = _SpareBlock().take
-
-
 def _layout(plan: SolvePlan, inputs: np.ndarray, rates: bool) -> PointLayout:
     """One block for every named point off the ground: shape (points, 1 or 3, 2, poses).
 
@@ -307,7 +274,7 @@ def _layout(plan: SolvePlan, inputs: np.ndarray, rates: bool) -> PointLayout:
     """
     ground = plan.mechanism.ground
     moving = [(link, c) for link, c in plan.points.values() if link != ground]
-    block = _fresh_block((len(moving), 3 if rates else 1, 2, inputs.shape[0]))
+    block = np.empty((len(moving), 3 if rates else 1, 2, inputs.shape[0]))
     rows = {(link, float(c[0]), float(c[1])): i for i, (link, c) in enumerate(moving)}
     return PointLayout(block, rows, inputs)
 

@@ -67,6 +67,9 @@ class Frame:
       slider on its guide).
 
     They are then computed when first read, so a solve pays only for what is used.
+    A point of a link known by a second point is found without them: it is a
+    fixed linear combination of the two points (and so are its velocity and
+    acceleration of theirs), and the second point itself is its own values.
     A frame solved for positions only has ``None`` for the point's rates (and
     the second point's); only its positions can be read then.
     """

@@ -35,8 +35,10 @@ The root taken is the one of the sketch (or the other, for a group in
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -48,7 +50,41 @@ from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
 
-__all__ = ["NOT_CLOSED", "PinCache", "frame_dyad", "place_dyad"]
+__all__ = ["NOT_CLOSED", "PinCache", "PointLayout", "frame_dyad", "laid_out", "place_dyad"]
+
+
+@dataclass
+class PointLayout:
+    """Where a sweep wants the named points' values: rows of one block it returns.
+
+    ``block`` has shape (points, 1 or 3, 2, poses) (positions; or positions,
+    velocities, accelerations) for the poses of ``inputs``; ``rows`` maps a
+    point's ``(link, x, y)`` (its link and sketch coordinates) to its row. The
+    first solve started inside :func:`laid_out` over these very ``inputs``
+    (``owner``, its :class:`PinCache`) writes each named pin and joint it finds
+    straight into its row, and notes the row in ``filled``: the values are the
+    same, and they need no copy nor memory of their own.
+    """
+
+    block: np.ndarray
+    rows: dict[tuple, int]
+    inputs: np.ndarray
+    filled: set[int] = field(default_factory=set)
+    owner: object = None
+
+
+_LAYOUT: ContextVar[PointLayout | None] = ContextVar("point_layout", default=None)
+
+
+@contextmanager
+def laid_out(layout: PointLayout) -> Iterator[PointLayout]:
+    """Solves started inside may write the named points into ``layout`` (:class:`PointLayout`)."""
+    token = _LAYOUT.set(layout)
+    try:
+        yield layout
+    finally:
+        _LAYOUT.reset(token)
+        layout.owner = None  # the owner refers to the layout: no cycle to wait for the collector
 
 
 class PinCache(dict):
@@ -57,15 +93,38 @@ class PinCache(dict):
     ``joints`` holds the keys of the dyads' joints, which the closed forms find
     themselves; every other entry is its link's frame's :meth:`Frame.point`
     (or :meth:`Frame.position`, the rates None), as any point of that link is.
+    Inside :func:`laid_out`, :meth:`targets` hands out the layout's rows.
     """
 
     def __init__(self) -> None:
         super().__init__()
         self.joints: set = set()
+        self.layout = _LAYOUT.get()
 
     def on_frames(self) -> dict:
         """The entries that come from a link's frame (not the dyads' joints)."""
         return {k: v for k, v in self.items() if k not in self.joints}
+
+    def targets(self, keys: tuple, inputs: np.ndarray, rates: bool) -> tuple | None:
+        """The arrays to write the point at any of ``keys`` into: its layout row, or None.
+
+        Two arrays (x, y) for positions, six with ``rates``; None when there
+        is no layout, the point has no row (or it is filled already), or the
+        solve is not the sweep's (other inputs or rates, or another solve
+        has taken the layout).
+        """
+        layout = self.layout
+        if layout is None or inputs is not layout.inputs:
+            return None
+        if layout.block.shape[1] != (3 if rates else 1) or layout.owner not in (None, self):
+            return None
+        row = next((layout.rows[k] for k in keys if k in layout.rows), None)
+        if row is None or row in layout.filled:
+            return None
+        layout.owner = self
+        layout.filled.add(row)
+        rows = layout.block[row]
+        return tuple(rows[k // 2, k % 2] for k in range(6 if rates else 2))
 
 
 # ---------------------------------------------------------------- shared pieces
@@ -200,20 +259,29 @@ def _pin(
     pins: dict,
     link: str,
     point: np.ndarray,
-    rates: bool = True,
+    rates: bool,
+    inputs: np.ndarray,
 ):
     """``(x, y, vx, vy, ax, ay)`` of a pin on a known link, each computed once per solve.
 
-    Without ``rates``, the rates are None.
+    Without ``rates``, the rates are None. A named pin of a sweep's layout
+    is written into its row (:meth:`PinCache.targets`).
     """
     key = (link, float(point[0]), float(point[1]))
     found = pins.get(key)
     if found is None:
         frame = _known_frame(frames, tables, link)
-        if rates:
-            found = pins[key] = frame.point(point)
+        targets = None
+        if isinstance(pins, PinCache) and frame is not GROUND_FRAME:
+            targets = pins.targets((key,), inputs, rates)
+        if targets is not None:
+            frame.point_into(point, targets)
+            found = targets if rates else (*targets, None, None, None, None)
+        elif rates:
+            found = frame.point(point)
         else:
-            found = pins[key] = (*frame.position(point), None, None, None, None)
+            found = (*frame.position(point), None, None, None, None)
+        pins[key] = found
     return found
 
 
@@ -234,7 +302,14 @@ class _FrameSolve:
     watch: list | None = None
 
     def pin(self, link: str, point: np.ndarray) -> tuple:
-        return _pin(self.frames, self.tables, self.pins, link, point, self.rates)
+        return _pin(self.frames, self.tables, self.pins, link, point, self.rates, self.inputs)
+
+    def targets(self, links: tuple, point: np.ndarray) -> tuple | None:
+        """Where to write point ``point`` (sketch) of any of ``links``: its layout row, or None."""
+        if not isinstance(self.pins, PinCache):
+            return None
+        keys = tuple((link, float(point[0]), float(point[1])) for link in links)
+        return self.pins.targets(keys, self.inputs, self.rates)
 
 
 def frame_dyad(
@@ -300,8 +375,8 @@ def _frame_rrr(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) 
     s1, s2 = c - b, c - d
     len1, len2 = float(s1 @ s1), float(s2 @ s2)
     _check_coincident(solve, pins_b, pins_d, len1, len2, (e1.point, e2.point))
-    joint = (c, *_circle_circle(solve, pins_b, pins_d, len1, len2, side))
-    _joint(solve, (l1, *c), (l2, *c), joint[1:])
+    out = solve.targets((l1, l2), c)
+    joint = (c, *_circle_circle(solve, pins_b, pins_d, len1, len2, side, out))
     solve.frames[l1] = Frame(b, bx, by, bvx, bvy, bax, bay, second=joint)
     solve.frames[l2] = Frame(d, dx, dy, dvx, dvy, dax, day, second=joint)
     return True
@@ -343,14 +418,21 @@ def _check_coincident(
 
 
 def _circle_circle(
-    solve: _FrameSolve, pin_b: tuple, pin_d: tuple, len1: float, len2: float, side: float
+    solve: _FrameSolve,
+    pin_b: tuple,
+    pin_d: tuple,
+    len1: float,
+    len2: float,
+    side: float,
+    out: tuple | None = None,
 ) -> tuple:
     """``(x, y, vx, vy, ax, ay)`` of an RRR dyad's joint C from its pins B and D.
 
     C is at distance √len1 from B and √len2 from D, on the ``side`` of BD;
-    its rates follow by :func:`_rrr_rates` (None for positions only).
-    Written with in-place operations: at 10^5 poses, fresh temporaries cost
-    more (in page faults) than the arithmetic.
+    its rates follow by :func:`_rrr_rates` (None for positions only). The
+    values are written into ``out`` (two or six arrays) when given.
+    Written with in-place operations on a few arrays: at 10^5 poses, fresh
+    temporaries cost more (in page faults and cache misses) than the arithmetic.
     """
     step, inputs, tol = solve.step, solve.inputs, _tolerance(solve.plan)
     bx, by = pin_b[:2]
@@ -368,33 +450,41 @@ def _circle_circle(
     along *= 0.5
     h = np.multiply(along, along, out=t)
     np.subtract(len1, h, out=h)
-    if h.min() < -tol:
-        raise _not_assembled(step, solve.plan, inputs, h < -tol)
-    np.maximum(h, 0.0, out=h)
+    low = h.min()
+    if not low >= -tol:  # NaN too: pins that coincide with unequal links
+        raise _not_assembled(step, solve.plan, inputs, ~(h >= -tol))
+    if low < 0.0:
+        np.maximum(h, 0.0, out=h)
     _watch_dips(solve, h)
     np.sqrt(h, out=h)
     if not solve.rates:  # |C − B|·|C − D|·sine = |BD|·h: the dead centres from h alone
         _dead_height(solve, h, inv, len1, len2)
-    h *= side
     h *= inv
     along *= inv
-    r1x = along * ex  # C − B
-    r1y = along * ey
+    r1y = np.multiply(along, ey, out=inv)  # C − B, the side's sign taken by adding or not
+    r1x = np.multiply(along, ex, out=along)
     ey *= h
     ex *= h
-    r1x -= ey
-    r1y += ex
-    cx, cy = bx + r1x, by + r1y
+    if side > 0:
+        r1x -= ey
+        r1y += ex
+    else:
+        r1x += ey
+        r1y -= ex
+    free = ex, ey  # scratch once C is written elsewhere
+    if out is None:
+        out, free = (ex, ey, None, None, None, None), (None, None)
+    cx, cy = np.add(bx, r1x, out=out[0]), np.add(by, r1y, out=out[1])
     if not solve.rates:
         return cx, cy, None, None, None, None
-    r2x, r2y = cx - dx, cy - dy  # C − D
-    det = r1x * r2y
-    t = np.multiply(r1y, r2x, out=ex)
+    r2x, r2y = np.subtract(cx, dx, out=free[0]), np.subtract(cy, dy, out=free[1])  # C − D
+    det = np.multiply(r1x, r2y, out=h)
+    t = np.multiply(r1y, r2x)
     det -= t
     scale = _inverse_lengths(len1, len2)
     if np.abs(det).min() * scale <= DEAD_CENTRE:
         _dead_centre(step, solve.plan, inputs, det * scale)
-    return (cx, cy, *_rrr_rates(pin_b, pin_d, r1x, r1y, r2x, r2y, det, t))
+    return (cx, cy, *_rrr_rates(pin_b, pin_d, (r1x, r1y, r2x, r2y), det, t, out[2:]))
 
 
 def _inverse_lengths(len1: float, len2: float) -> float:
@@ -405,31 +495,30 @@ def _inverse_lengths(len1: float, len2: float) -> float:
 def _dead_height(solve: _FrameSolve, h: np.ndarray, inv, len1: float, len2: float) -> None:
     """The dead-centre check of an RRR dyad from C's height ``h`` over BD (``inv`` = 1/|BD|).
 
-    The sine of the transmission angle is |BD|·h/(|BC|·|CD|).
+    The sine of the transmission angle is |BD|·h/(|BC|·|CD|); the smallest
+    height over the largest ``inv`` bounds it from below, so most sweeps need
+    no pass for the quotient.
     """
     scale = _inverse_lengths(len1, len2)
+    if h.min() / inv.max() * scale > DEAD_CENTRE:
+        return
     sine = h / inv
     if sine.min() * scale <= DEAD_CENTRE:
         _dead_centre(solve.step, solve.plan, solve.inputs, sine * scale)
 
 
 def _rrr_rates(
-    pin_b: tuple,
-    pin_d: tuple,
-    r1x: np.ndarray,
-    r1y: np.ndarray,
-    r2x: np.ndarray,
-    r2y: np.ndarray,
-    det: np.ndarray,
-    t: np.ndarray,
+    pin_b: tuple, pin_d: tuple, arms: tuple, det: np.ndarray, t: np.ndarray, out: tuple
 ) -> tuple:
     """``(vx, vy, ax, ay)`` of an RRR dyad's joint C, by Cramer's rule.
 
     ``v_C = v_B + ω1·J·BC = v_D + ω2·J·DC`` and
-    ``a_C = a_B + ε1·J·BC − ω1²·BC = a_D + ε2·J·DC − ω2²·DC``, with
-    ``r1 = C − B``, ``r2 = C − D`` and ``det = r1 × r2`` (overwritten,
-    as is the scratch array ``t``).
+    ``a_C = a_B + ε1·J·BC − ω1²·BC = a_D + ε2·J·DC − ω2²·DC``, with ``arms``
+    ``(r1x, r1y, r2x, r2y)``: ``r1 = C − B``, ``r2 = C − D``, and ``det = r1 × r2``
+    (overwritten, as is the scratch array ``t``). The values are written
+    into the four arrays of ``out`` (fresh ones where they are None).
     """
+    r1x, r1y, r2x, r2y = arms
     bvx, bvy, bax, bay = pin_b[2:]
     dvx, dvy, dax, day = pin_d[2:]
     inv = np.reciprocal(det, out=det)
@@ -440,9 +529,9 @@ def _rrr_rates(
     w2 = gx * r1x
     w2 += np.multiply(gy, r1y, out=t)
     w2 *= inv
-    vcx = w1 * r1y
+    vcx = np.multiply(w1, r1y, out=out[0])
     np.subtract(bvx, vcx, out=vcx)
-    vcy = w1 * r1x
+    vcy = np.multiply(w1, r1x, out=out[1])
     vcy += bvy
     w1 *= w1  # from here on ω1² and ω2²
     w2 *= w2
@@ -457,10 +546,10 @@ def _rrr_rates(
     e1 = np.multiply(gx, r2x, out=gx)
     e1 += np.multiply(gy, r2y, out=t)
     e1 *= inv
-    acx = e1 * r1y
+    acx = np.multiply(e1, r1y, out=out[2])
     acx += np.multiply(w1, r1x, out=t)
     np.subtract(bax, acx, out=acx)
-    acy = e1 * r1x
+    acy = np.multiply(e1, r1x, out=out[3])
     acy -= np.multiply(w1, r1y, out=t)
     acy += bay
     return vcx, vcy, acx, acy

@@ -30,6 +30,7 @@ reported relative to the largest term.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -154,7 +155,7 @@ def _applied(plan: SolvePlan, where: _Where) -> dict[str, np.ndarray]:
             continue
         link = load.link
         if link not in out:
-            out[link] = np.zeros((n, 3))
+            out[link] = _load_columns(n)
         total = out[link]
         if load.kind == "moment":
             total[:, 2] += load.values[0]
@@ -344,7 +345,7 @@ def _forces_once(
     moments: dict[str, np.ndarray] = {}
     balancing_force = None
     balance = {x.link: x for x in m.loads if x.kind == "balance"}
-    power = [np.einsum("ni,ni->n", value, motion.qd[link]) for link, value in applied.items()]
+    power = [_power(where, link, value) for link, value in applied.items()]
     for d in plan.drivers:
         load = balance.get(d.link)
         crank = _crank_balance(plan, where, d, load, applied, carried)
@@ -467,6 +468,33 @@ class _Where:
 _ORIGIN = np.zeros(2)
 
 
+def _power(where: _Where, link: str, value: np.ndarray) -> np.ndarray:
+    """The power of a generalized load ``value`` (Fx, Fy, M about the frame origin) on a link.
+
+    For a link with a frame, ``v_O = v_R + ω·J·(O − R)`` (R the frame's
+    reference point) gives ``P = F·v_R + ω·(M + (O − R) × F)``: no (N, 3)
+    velocity columns and no rotation needed.
+    """
+    frame = where.motion.frames.get(link)
+    if frame is None or frame.vx is None:
+        return np.einsum("ni,ni->n", value, where.motion.qd[link])
+    ox, oy = where.position(link, _ORIGIN)
+    fx, fy = value[:, 0], value[:, 1]
+    arm = np.subtract(ox, frame.x) * fy
+    arm -= np.subtract(oy, frame.y) * fx
+    arm += value[:, 2]
+    arm *= frame.omega
+    out = fx * frame.vx
+    out += fy * frame.vy
+    out += arm
+    return out
+
+
+def _load_columns(n: int) -> np.ndarray:
+    """A zero generalized load (N, 3) whose columns Fx, Fy, M are each contiguous."""
+    return np.zeros((3, n)).T
+
+
 def _load_about(where: _Where, link: str, total: np.ndarray, px, py) -> tuple:
     """A link's generalized load (about its frame origin) as ``(Fx, Fy, M about (px, py))``."""
     ox, oy = where.position(link, _ORIGIN)
@@ -475,16 +503,26 @@ def _load_about(where: _Where, link: str, total: np.ndarray, px, py) -> tuple:
 
 
 def _carry(where: _Where, carried: dict, link: str, fx, fy, px, py, couple=0.0) -> None:
-    """Add the force ``(fx, fy)`` at ``(px, py)`` (and a couple) on a known link to ``carried``."""
+    """Add the force ``−(fx, fy)`` at ``(px, py)`` (and ``couple``) on a known link to ``carried``.
+
+    The force is the reaction on the group's link; its known link takes the
+    opposite one. Worked out as the sum of the negated force's moment and the
+    couple, to the last bit, without making the negated arrays.
+    """
     if link == where.ground:
         return
     ox, oy = where.position(link, _ORIGIN)
-    moment = (px - ox) * fy - (py - oy) * fx + couple
+    arm = np.subtract(px, ox)
+    arm *= fy
+    moment = np.subtract(py, oy)
+    moment *= fx
+    moment -= arm  # (py − oy)·fx − (px − ox)·fy: the moment of −(fx, fy)
+    moment += couple
     value = carried.get(link)  # the pass's own arrays: added to in place
     if value is None:
-        value = carried[link] = np.zeros((where.motion.inputs.shape[0], 3))
-    value[:, 0] += fx
-    value[:, 1] += fy
+        value = carried[link] = _load_columns(where.motion.inputs.shape[0])
+    value[:, 0] -= fx
+    value[:, 1] -= fy
     value[:, 2] += moment
 
 
@@ -535,8 +573,11 @@ def _closed_dyad(
         value[:, 0] = fx
         value[:, 1] = fy
         kind = "R" if eq.kind == "HINGE" else "P"
-        out.append((equation_point(m, eq), (eq.a, eq.b), kind, value, np.broadcast_to(
-            np.asarray(couple, dtype=float), (n,)).copy()))
+        if isinstance(couple, float) and couple == 0.0 and math.copysign(1.0, couple) > 0:
+            couples = np.zeros(n)  # left untouched until read
+        else:
+            couples = np.broadcast_to(np.asarray(couple, dtype=float), (n,)).copy()
+        out.append((equation_point(m, eq), (eq.a, eq.b), kind, value, couples))
     return out
 
 
@@ -561,20 +602,33 @@ def _rrr_forces(step, where, total, carried, m, inner) -> dict | None:
     f2x, f2y, m2 = _load_about(where, l2, total[l2], bx, by)
     ux, uy, wx, wy = ax - bx, ay - by, cx - bx, cy - by
     fx, fy = f1x + f2x, f1y + f2y
-    rhs_a = -m1
-    rhs_b = m2 - (wx * fy - wy * fx)
-    det = ux * wy - uy * wx
-    rax = (rhs_a * wx - ux * rhs_b) / det  # on l1 from its known link, at A
-    ray = (wy * rhs_a - uy * rhs_b) / det
-    rcx, rcy = -fx - rax, -fy - ray  # on l2 from its known link, at C
-    rbx, rby = -f1x - rax, -f1y - ray  # on l1 from l2, at B
+    # in place on the arrays made here (the same arithmetic, fewer fresh arrays)
+    rhs_a = np.negative(m1, out=m1)
+    t = wx * fy
+    t -= (s := wy * fx)
+    rhs_b = np.subtract(m2, t, out=m2)  # m2 − (w × f)
+    det = np.multiply(ux, wy, out=t)
+    det -= np.multiply(uy, wx, out=s)
+    rax = rhs_a * wx  # on l1 from its known link, at A: (rhs_a·wx − ux·rhs_b)/det
+    rax -= np.multiply(ux, rhs_b, out=s)
+    rax /= det
+    ray = wy * rhs_a  # (wy·rhs_a − uy·rhs_b)/det
+    ray -= np.multiply(uy, rhs_b, out=s)
+    ray /= det
+    rcx = np.negative(fx, out=fx)  # on l2 from its known link, at C: −f − r_A
+    rcx -= rax
+    rcy = np.negative(fy, out=fy)
+    rcy -= ray
+    rbx, rby = np.negative(f1x), np.negative(f1y)  # on l1 from l2, at B: −f1 − r_A
+    rbx -= rax
+    rby -= ray
     out = {}
     for eq, link, (gx, gy), (px, py) in (
         (ea, l1, (rax, ray), (ax, ay)),
         (ec, l2, (rcx, rcy), (cx, cy)),
     ):
         other = eq.b if eq.a == link else eq.a
-        _carry(where, carried, other, -gx, -gy, px, py)
+        _carry(where, carried, other, gx, gy, px, py)
         out[id(eq)] = (gx, gy, 0.0) if eq.b == link else (-gx, -gy, 0.0)
     out[id(inner)] = (rbx, rby, 0.0) if inner.b == l1 else (-rbx, -rby, 0.0)
     return out
@@ -606,9 +660,9 @@ def _rrp_forces(step, where, total, carried, m, inner) -> dict | None:
     gx, gy = normal * nx, normal * ny
     couple = -ms - ((sx - cx) * gy - (sy - cy) * gx)  # on the slider, besides
     guide = es.a if es.b == slider else es.b
-    _carry(where, carried, guide, -gx, -gy, sx, sy, -couple)
+    _carry(where, carried, guide, gx, gy, sx, sy, -couple)
     other = er.b if er.a == rod else er.a
-    _carry(where, carried, other, -rbx, -rby, bx, by)
+    _carry(where, carried, other, rbx, rby, bx, by)
     return {
         id(er): (rbx, rby, 0.0) if er.b == rod else (-rbx, -rby, 0.0),
         id(inner): (rcx, rcy, 0.0) if inner.b == rod else (-rcx, -rcy, 0.0),
@@ -696,9 +750,15 @@ def _driver_balance(
 
 def _residual(power: list[np.ndarray], n: int) -> np.ndarray:
     """The virtual-power check: |Σ powers| relative to the largest term, at every pose."""
-    terms = np.abs(np.array(power)) if power else np.zeros((1, n))
-    scale = terms.max(axis=0)
-    total_power = np.abs(np.sum(np.array(power), axis=0)) if power else np.zeros(n)
+    if not power:
+        return np.zeros(n)
+    # term by term, in order (as a sum over the stacked terms adds them), on two arrays
+    total_power = np.array(power[0], dtype=float)
+    scale = np.abs(total_power)
+    for term in power[1:]:
+        total_power += term
+        np.maximum(scale, np.abs(term), out=scale)  # the largest |term|
+    np.abs(total_power, out=total_power)
     return np.where(scale > 0, total_power / np.where(scale > 0, scale, 1.0), 0.0)
 
 

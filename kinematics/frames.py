@@ -67,6 +67,9 @@ class Frame:
       slider on its guide).
 
     They are then computed when first read, so a solve pays only for what is used.
+    A point of a link known by a second point is found without them: it is a
+    fixed linear combination of the two points (and so are its velocity and
+    acceleration of theirs), and the second point itself is its own values.
     A frame solved for positions only has ``None`` for the point's rates (and
     the second point's); only its positions can be read then.
     """
@@ -160,6 +163,8 @@ class Frame:
 
     def position(self, point: np.ndarray) -> tuple[Values, Values]:
         """World position of the link's sketch point ``point``."""
+        if self._on_two_points():
+            return self._combined(point, 2)
         rx, ry = self.offset(point)
         return self.x + rx, self.y + ry
 
@@ -168,6 +173,8 @@ class Frame:
         dx, dy = float(point[0] - self.ref[0]), float(point[1] - self.ref[1])
         if dx == 0.0 and dy == 0.0:
             return self.x, self.y, self.vx, self.vy, self.ax, self.ay
+        if self._on_two_points():
+            return self._combined(point, 6)
         c, s = self.cos, self.sin
         rx, ry = c * dx - s * dy, s * dx + c * dy
         w, e = self.omega, self.epsilon
@@ -189,6 +196,9 @@ class Frame:
                                      strict=False):  # fmt: skip
                 target[...] = value
             return
+        if self._on_two_points():
+            self._combine_into(point, out)
+            return
         c, s = self.cos, self.sin
         rx, ry = c * dx - s * dy, s * dx + c * dy
         np.add(self.x, rx, out=out[0])
@@ -204,6 +214,56 @@ class Frame:
         if not (isinstance(e, float) and e == 0.0):  # a crank turning at a constant rate
             np.subtract(out[4], np.multiply(e, ry), out=out[4])
             np.add(out[5], np.multiply(e, rx), out=out[5])
+
+    def _on_two_points(self) -> bool:
+        """Whether the link is known by two of its points (its rotation not yet needed)."""
+        return self._second is not None and self._turns_with is None
+
+    def _combined(self, point: np.ndarray, count: int) -> tuple:
+        """:meth:`_combine_into` fresh arrays: the first ``count`` of ``(x, y, vx, vy, ax, ay)``."""
+        second = self._second
+        if float(point[0]) == float(second[0][0]) and float(point[1]) == float(second[0][1]):
+            return tuple(second[1 : 1 + count])
+        n = np.shape(second[1])[0]
+        out = tuple(np.empty(n) for _ in range(count))
+        self._combine_into(point, out)
+        return out
+
+    def _combine_into(self, point: np.ndarray, out: tuple) -> None:
+        """A point of a link known by two points P (``ref``) and Q (``second``), into ``out``.
+
+        With ``r = Q − P`` it is ``P + α·r + β·J·r``, ``α`` and ``β`` fixed by the
+        sketch; the combination is linear, so the velocity and acceleration
+        follow from those of P and Q the same way: no rotation, ω or ε needed.
+        At Q itself it is Q's own values.
+        """
+        xy = self._second[0]
+        sx, sy = float(xy[0] - self.ref[0]), float(xy[1] - self.ref[1])
+        dx, dy = float(point[0] - self.ref[0]), float(point[1] - self.ref[1])
+        if dx == sx and dy == sy:
+            for target, value in zip(out, self._second[1:], strict=False):
+                target[...] = value
+            return
+        k = 1.0 / (sx * sx + sy * sy)
+        alpha, beta = (sx * dx + sy * dy) * k, (sx * dy - sy * dx) * k
+        mine = (self.x, self.y, self.vx, self.vy, self.ax, self.ay)
+        if len(out) > 2 and self.vx is None:
+            raise ValueError("a frame solved for positions only has no rates")
+        n = out[0].shape[0]
+        rx, ry, t = np.empty(n), np.empty(n), np.empty(n)
+        for i in range(0, len(out), 2):
+            px, py = mine[i], mine[i + 1]
+            np.subtract(self._second[1 + i], px, out=rx)
+            np.subtract(self._second[2 + i], py, out=ry)
+            ox, oy = out[i], out[i + 1]
+            np.multiply(ry, beta, out=t)
+            np.multiply(rx, alpha, out=ox)
+            ox -= t
+            ox += px
+            np.multiply(rx, beta, out=t)
+            np.multiply(ry, alpha, out=oy)
+            oy += t
+            oy += py
 
     def angle(self) -> Values:
         """The rotation from the sketch, continuous along the poses."""

@@ -28,6 +28,7 @@ import numpy as np
 
 from structure.errors import EdgeListError, EdgeListProblem
 
+from .dyads import PointLayout, laid_out
 from .errors import SweepSizeError
 from .forces import forces_over
 from .plan import SolvePlan
@@ -226,8 +227,10 @@ def sweep(
     if inputs.ndim == 1:
         inputs = inputs[:, None]
     _check_size(plan, inputs.shape[0], rates)
-    motion = solve_poses(plan, inputs, rates=rates)
-    points = _point_block(plan, motion, rates)
+    layout = _layout(plan, inputs, rates)
+    with laid_out(layout):  # the solve writes the named pins and joints into their rows
+        motion = solve_poses(plan, inputs, rates=rates)
+    points = _point_block(plan, motion, layout)
     keys = ("angle", "omega", "epsilon") if rates else ("angle",)
     links = {
         name: _LazyValues({key: partial(_link_column, motion, name, key) for key in keys})
@@ -262,33 +265,48 @@ def _link_column(motion: Motion, link: str, key: str) -> np.ndarray:
     return (motion.qd if key == "omega" else motion.qdd)[link][:, 2]
 
 
-def _point_block(plan: SolvePlan, motion: Motion, rates: bool) -> dict[str, dict[str, np.ndarray]]:
-    """Every named point's position (velocity, acceleration), as views into one block.
+def _layout(plan: SolvePlan, inputs: np.ndarray, rates: bool) -> PointLayout:
+    """One block for every named point off the ground: shape (points, 1 or 3, 2, poses).
 
-    The block has shape (points, 1 or 3, 2, poses): each point's quantity is
-    the transposed view ``block[i, k].T``, of shape (poses, 2), with x and y
-    each contiguous. A point on the ground is a read-only constant.
+    Each point's quantity is the transposed view ``block[i, k].T``, of shape
+    (poses, 2), with x and y each contiguous. A row is keyed by the point's
+    link and sketch coordinates, as the solve finds it.
+    """
+    ground = plan.mechanism.ground
+    moving = [(link, c) for link, c in plan.points.values() if link != ground]
+    block = np.empty((len(moving), 3 if rates else 1, 2, inputs.shape[0]))
+    rows = {(link, float(c[0]), float(c[1])): i for i, (link, c) in enumerate(moving)}
+    return PointLayout(block, rows, inputs)
+
+
+def _point_block(
+    plan: SolvePlan, motion: Motion, layout: PointLayout
+) -> dict[str, dict[str, np.ndarray]]:
+    """Every named point's position (velocity, acceleration), as views into ``layout``'s block.
+
+    The rows the solve has not filled are filled here. A point on the ground
+    is a read-only constant; a point on a link the solve does without (a
+    rolling gear mesh's virtual link) is left out.
     """
     n = motion.inputs.shape[0]
+    block = layout.block
+    rates = block.shape[1] == 3
     keys = ("position", "velocity", "acceleration") if rates else ("position",)
     ground = plan.mechanism.ground
-    moving = [
-        (name, link, c)
-        for name, (link, c) in plan.points.items()
-        if link != ground and link in motion.q  # a virtual link: rolling gear meshes do without
-    ]
-    block = np.empty((len(moving), len(keys), 2, n))
-    row = {name: i for i, (name, _, _) in enumerate(moving)}
     zero = np.broadcast_to(np.zeros(2), (n, 2))
     out: dict[str, dict[str, np.ndarray]] = {}
     for name, (link, c) in plan.points.items():
-        if name in row:
-            i = row[name]
-            _fill_point(motion, link, c, block[i], rates)
-            out[name] = {key: block[i, k].T for k, key in enumerate(keys)}
-        elif link == ground:
+        if link == ground:
             fixed = np.broadcast_to(c.astype(float), (n, 2))
             out[name] = dict(zip(keys, (fixed, zero, zero), strict=False))
+            continue
+        if link not in motion.q:
+            continue
+        i = layout.rows[(link, float(c[0]), float(c[1]))]
+        if i not in layout.filled:
+            layout.filled.add(i)
+            _fill_point(motion, link, c, block[i], rates)
+        out[name] = {key: block[i, k].T for k, key in enumerate(keys)}
     return out
 
 

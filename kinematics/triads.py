@@ -28,11 +28,17 @@ step, a pose where the circle intersection meets its tangency (where the
 side changes) or where Newton does not settle near its prediction.
 
 >>> from structure import analyze, parse_edgelist
->>> from kinematics import make_plan
->>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "1 2 R B", "2 3 R C", "2 4 R D",
-...                     "2 5 R E", "3 0 R F", "4 0 R G", "5 0 R H", "point A 0 0",
-...                     "point B 0 0.1", "point C 0.2 0.3", "point D 0.4 0.3", "point E 0.3 0.5",
-...                     "point F 0.2 0", "point G 0.6 0.1", "point H 0.3 0.9"])
+>>> from kinematics import make_plan, solve_poses
+>>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "1 3 R B", "3 2 R C", "2 4 R D",
+...                     "4 0 R F", "2 5 R E", "5 0 R G", "point A 0 0", "point B 0 0.1",
+...                     "point C 0.1 0.4", "point D 0.4 0.45", "point E 0.3 0.6",
+...                     "point F 0.5 0.1", "point G 0.1 0.9"])
+>>> plan = make_plan(analyze(m))
+>>> triad = triad_of(plan.steps[0])
+>>> triad.base, [(lead.link, lead.known) for lead in triad.leads]
+('2', [('3', '1'), ('4', '0'), ('5', '0')])
+>>> sorted(solve_poses(plan, np.linspace(0.0, 0.5, 21)[:, None]).frames)  # solved as frames
+['1', '2', '3', '4', '5']
 """
 
 from __future__ import annotations
@@ -60,15 +66,18 @@ __all__ = [
 
 #: input span (rad, or fraction of the sketch) between the coarse poses followed one by one
 COARSE_STEP = 0.1
-_COARSE_JUMP = 0.1  # rad: a coarse root this far from its extrapolation may be another mode
+_COARSE_JUMP = 0.05  # rad: a coarse root this far from its extrapolation may be another mode
 _FINE_JUMP = 0.05  # rad: a root this far from its interpolation may be another mode
 _SETTLED = 1e-9  # rad: a Newton step this small leaves an error of ~1e-18, below rounding
 _ITERATIONS = 8  # Newton steps per pose at most (two or three are the rule)
 _TANGENCY = 1e-8  # h²·D²/l₁²: the circle intersection this close to its tangency is given up
 _CLOSED = 1e-11  # the distance |P₃E₃| − l₃ accepted, × the sketch's size
-#: the triad's conditioning measure (:func:`pin_rates`) below which a pose is screened
-#: by the group's full Jacobian
-SUSPECT = 1e-3
+#: the triad's conditioning measure (:func:`pin_rates`) below which a pose is screened by the
+#: group's full Jacobian, × (1 + the pins' distance from the origin / the sketch's size)²: on
+#: random triads near their singular pose, the measure stays below 110·(1 + that)² times the
+#: Jacobian's σ_min/σ_max (whose θ columns grow with the distance), so a pose with
+#: σ_min/σ_max at DEAD_CENTRE = 1e-6 has a measure below 1.1e-4·(1 + that)²: 90 times less
+SUSPECT = 1e-2
 
 
 @dataclass(frozen=True)
@@ -139,12 +148,24 @@ def triad_of(step: GroupStep) -> Triad | None:
             return None
         known = out.b if out.a == lead else out.a
         leads.append(Lead(lead, known, np.asarray(out.point, float), np.asarray(eq.point, float)))
-    triad = Triad(base, (leads[0], leads[1], leads[2]))
     if len({lead.link for lead in leads}) != 3 or min(x.length for x in leads) <= 0.0:
         return None
-    if float(np.hypot(*triad.arms[0])) <= 0.0 or triad.side == 0.0:
-        return None
-    return triad
+    return Triad(base, (leads[0], leads[1], leads[2]))
+
+
+def _rotations(triad: Triad, outer: list) -> list[tuple[Triad, list]]:
+    """The triad with its leads taken in each cyclic order, the outer pins' motions alike.
+
+    Each order intersects the circles of another pair of leads; the orders
+    whose first two pins coincide on the base, or whose P₁ lies on the line
+    E₁C₂ on the sketch, are left out.
+    """
+    out = []
+    for k in range(3):
+        turned = Triad(triad.base, triad.leads[k:] + triad.leads[:k])  # type: ignore[arg-type]
+        if float(np.hypot(*turned.arms[0])) > 0.0 and turned.side != 0.0:
+            out.append((turned, outer[k:] + outer[:k]))
+    return out
 
 
 # ---------------------------------------------------------------- the residual in φ
@@ -189,12 +210,12 @@ def _coarse_newton(triad: Triad, known: tuple, phi: float, side: float) -> float
             f, df, *_, gap = angle_residual(triad, known, math.cos(phi), math.sin(phi), side)
         except ZeroDivisionError:  # on the tangency, or E₁ on C₂
             return None
-        if not gap > _TANGENCY or df == 0.0:
+        if df == 0.0:
             return None
         step = -f / df
         phi += step
         if abs(step) <= _SETTLED:
-            return phi
+            return phi if gap > _TANGENCY else None
     return None
 
 
@@ -216,39 +237,51 @@ def path_length(plan: SolvePlan, inputs: np.ndarray) -> np.ndarray | None:
 def _coarse_roots(
     triad: Triad, known: tuple, distance: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray] | None:
-    """φ at coarse poses about :data:`COARSE_STEP` apart, followed one by one from the sketch.
+    """φ at coarse poses along the path, followed one by one from the sketch.
 
-    Returns the coarse poses' distances along the path and their roots (the
-    sketch first, at distance 0 and φ = 0), None where one does not settle
-    near its extrapolation from the roots before it.
+    Each coarse pose lies at most a stride further along the path than the
+    last; Newton there starts from an extrapolation of the roots before it
+    and must settle within :data:`_COARSE_JUMP` of it. The stride starts at
+    :data:`COARSE_STEP` / 8, is halved where Newton lands too far (or does
+    not settle), doubled up to :data:`COARSE_STEP` where it lands close: a
+    step-size control, so that the coarse poses are dense where the triad
+    moves fast. Returns the coarse poses' distances along the path and their
+    roots (the sketch first, at distance 0 and φ = 0), None where even the
+    step to the next pose fails.
     """
-    marks = np.floor(distance / COARSE_STEP)
-    nodes = np.flatnonzero(np.diff(marks, prepend=-1.0))
-    if nodes[-1] != len(distance) - 1:
-        nodes = np.append(nodes, len(distance) - 1)
-    at = [0.0, *distance[nodes].tolist()]
-    points = [x[nodes].tolist() if isinstance(x, np.ndarray) else None for x in known]
-    roots = [0.0]
-    side = triad.side
-    for j in range(1, len(at)):
-        pose = tuple(x if p is None else p[j - 1] for x, p in zip(known, points, strict=True))
-        guess = _extrapolated(at, roots, j)
+    at, roots = [0.0], [0.0]
+    last, stride, side = -1, COARSE_STEP / 8, triad.side
+    while last < len(distance) - 1:
+        j = max(last + 1, int(np.searchsorted(distance, at[-1] + stride, "right")) - 1)
+        here = float(distance[j])
+        if here == at[-1]:  # the same place on the path (a repeated input): the same root
+            last = j
+            continue
+        pose = tuple(float(x[j]) if isinstance(x, np.ndarray) else x for x in known)
+        guess = _extrapolated(at, roots, here)
         phi = _coarse_newton(triad, pose, guess, side)
         if phi is None or abs(phi - guess) > _COARSE_JUMP:
-            return None
+            if j == last + 1:
+                return None
+            stride /= 2
+            continue
+        if abs(phi - guess) < _COARSE_JUMP / 8:
+            stride = min(2 * stride, COARSE_STEP)
+        at.append(here)
         roots.append(phi)
+        last = j
     return np.array(at), np.array(roots)
 
 
-def _extrapolated(at: list[float], roots: list[float], j: int) -> float:
-    """The root at ``at[j]``: a parabola through the last three roots (a line, the last one)."""
-    x, x0, y0 = at[j], at[j - 1], roots[j - 1]
-    if j == 1 or at[j - 2] == x0:
+def _extrapolated(at: list[float], roots: list[float], x: float) -> float:
+    """The root at ``x``: a parabola through the last three roots (a line, the last one)."""
+    x0, y0 = at[-1], roots[-1]
+    if len(at) == 1:
         return y0
-    x1, y1 = at[j - 2], roots[j - 2]
-    if j == 2 or at[j - 3] == x1:
+    x1, y1 = at[-2], roots[-2]
+    if len(at) == 2:
         return y0 + (y0 - y1) * (x - x0) / (x0 - x1)
-    x2, y2 = at[j - 3], roots[j - 3]
+    x2, y2 = at[-3], roots[-3]
     return (
         y0 * (x - x1) * (x - x2) / ((x0 - x1) * (x0 - x2))
         + y1 * (x - x0) * (x - x2) / ((x1 - x0) * (x1 - x2))
@@ -276,12 +309,12 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
         with np.errstate(divide="ignore", invalid="ignore"):
             f, df, p1x, p1y, dp1x, dp1y, gap = angle_residual(triad, known, c, s, triad.side)
             step = -f / df
-        if not np.all(gap > _TANGENCY):
-            return None
         phi = phi + step
         if np.all(np.abs(step) <= _SETTLED):
             break
     else:
+        return None
+    if not np.all(gap > _TANGENCY):
         return None
     c, s = c - s * step, s + c * step
     p1x, p1y = p1x + dp1x * step, p1y + dp1y * step
@@ -343,6 +376,24 @@ def pin_rates(triad: Triad, rotated: tuple, offsets: tuple, outer: tuple, length
     return omega, epsilon, velocities, accelerations, np.abs(det) / (length * norms)
 
 
+def _in_some_order(triad: Triad, outer: list, distance: np.ndarray) -> tuple | None:
+    """:func:`triad_angles` with the leads in the first cyclic order that solves every pose.
+
+    Returns that order's triad, its outer pins' motions and the solution; None
+    if no order does (each pair of leads meets its tangency somewhere).
+    """
+    for turned, moved in _rotations(triad, outer):
+        solved = triad_angles(turned, tuple(value for pin in moved for value in pin[:2]), distance)
+        if solved is not None:
+            return turned, moved, solved
+    return None
+
+
+def _reach(triad: Triad) -> float:
+    """How far the triad's pins lie from the origin on the sketch (which the θ columns weigh)."""
+    return max(float(np.hypot(*p)) for lead in triad.leads for p in (lead.inner, lead.outer))
+
+
 def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
     """The frame of a link solved before the triad (the ground's if it is not a moving link)."""
     frame = frames.get(link)
@@ -383,11 +434,10 @@ def frame_triad(
     for lead in triad.leads:
         frame = _known_frame(frames, tables, lead.known)
         outer.append(frame.point(lead.outer) if rates else frame.position(lead.outer))
-    known = tuple(value for pin in outer for value in pin[:2])
-    solved = triad_angles(triad, known, distance)
-    if solved is None:
+    found = _in_some_order(triad, outer, distance)
+    if found is None:
         return None
-    phi, c, s, p1x, p1y = solved
+    triad, outer, (phi, c, s, p1x, p1y) = found
     rotated = tuple((c * dx - s * dy, s * dx + c * dy) for dx, dy in triad.arms)
     pins = ((p1x, p1y), *((p1x + rx, p1y + ry) for rx, ry in rotated))
     suspect = np.zeros(len(inputs), dtype=bool)
@@ -398,7 +448,7 @@ def frame_triad(
         omega, epsilon, velocities, accelerations, measure = pin_rates(
             triad, rotated, offsets, tuple(outer), plan.length
         )
-        suspect = ~(measure > SUSPECT)
+        suspect = ~(measure > SUSPECT * (1.0 + _reach(triad) / plan.length) ** 2)
     frames[triad.base] = Frame(
         triad.leads[0].inner, p1x, p1y, *velocities[0], *accelerations[0],
         c, s, omega, epsilon, phi,

@@ -24,8 +24,10 @@ a :class:`~kinematics.frames.Frame`.
 Where this does not apply, :func:`frame_triad` returns None and the general
 Newton solves the group as before: a group that is not an RRR triad, inputs
 that start away from the sketch or take steps longer than the continuation
-step, a pose where the circle intersection meets its tangency (where the
-side changes) or where Newton does not settle near its prediction.
+step, inputs that all are the sketch (which the general Newton keeps exactly,
+where this solve would land within rounding of it), a pose where the circle
+intersection meets its tangency for every pair of leads (where its side
+changes), or where Newton does not settle near its prediction.
 
 >>> from structure import analyze, parse_edgelist
 >>> from kinematics import make_plan, solve_poses
@@ -45,6 +47,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -109,6 +112,13 @@ class Triad:
         """d₁₂ and d₁₃: the base's second and third pins from its first, on the sketch."""
         first = self.leads[0].inner
         return self.leads[1].inner - first, self.leads[2].inner - first
+
+    @cached_property
+    def shape(self) -> tuple[float, ...]:
+        """``(d₁₂x, d₁₂y, d₁₃x, d₁₃y, l₁, l₂, l₃)`` as floats, what the residual reads."""
+        (d2x, d2y), (d3x, d3y) = self.arms
+        return (float(d2x), float(d2y), float(d3x), float(d3y),
+                *(lead.length for lead in self.leads))  # fmt: skip
 
     @property
     def side(self) -> float:
@@ -182,8 +192,7 @@ def angle_residual(triad: Triad, known: tuple, c, s, side: float) -> tuple:
     the two circles touch.
     """
     e1x, e1y, e2x, e2y, e3x, e3y = known
-    (d2x, d2y), (d3x, d3y) = triad.arms
-    l1, l2, l3 = (lead.length for lead in triad.leads)
+    d2x, d2y, d3x, d3y, l1, l2, l3 = triad.shape
     r2x, r2y = c * d2x - s * d2y, s * d2x + c * d2y
     r3x, r3y = c * d3x - s * d3y, s * d3x + c * d3y
     wx, wy = e2x - r2x - e1x, e2y - r2y - e1y
@@ -428,8 +437,8 @@ def frame_triad(
     """
     triad = triad_of(step)
     distance = path_length(plan, inputs) if triad is not None else None
-    if triad is None or distance is None:
-        return None
+    if triad is None or distance is None or distance[-1] == 0.0:
+        return None  # (every pose the sketch: the sketch is the answer, which Newton keeps exactly)
     outer = []
     for lead in triad.leads:
         frame = _known_frame(frames, tables, lead.known)

@@ -7,8 +7,10 @@ from their input; then each Assur group, in solve order, is
 
 * positioned: dyads in closed form, vectorised over all poses, with the
   sketch's assembly mode (the sign of the square root; :mod:`kinematics.dyads`),
-  other groups by Newton's method on their own equations, following the inputs
-  from the sketch (:mod:`kinematics.newton`);
+  class III triads of revolute pairs through one unknown, their base link's
+  angle, with their rates in closed form (:mod:`kinematics.triads`), other
+  groups by Newton's method on their own equations, following the inputs from
+  the sketch (:mod:`kinematics.newton`);
 * given its velocities from ``J_g·q̇_g = −J_k·q̇_k`` (``k``: the known links its
   external pairs touch) and its accelerations from
   ``J_g·q̈_g = −J_k·q̈_k − (dJ/dt)·q̇``, as batched linear solves (RRR and RRP

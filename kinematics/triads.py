@@ -71,6 +71,10 @@ __all__ = [
 COARSE_STEP = 0.1
 _COARSE_JUMP = 0.05  # rad: a coarse root this far from its extrapolation may be another mode
 _FINE_JUMP = 0.05  # rad: a root this far from its interpolation may be another mode
+#: f′ may change by this fraction of its value at the root between Newton's start and the
+#: root: then the start lies well inside the root's basin (Kantorovich: |f″|·|δ|/|f′| ≤ ½),
+#: closer to it than to a neighbouring root, such as the other one near a dead centre
+_BASIN = 0.25
 _SETTLED = 1e-9  # rad: a Newton step this small leaves an error of ~1e-18, below rounding
 _ITERATIONS = 8  # Newton steps per pose at most (two or three are the rule)
 _TANGENCY = 1e-8  # h²·D²/l₁²: the circle intersection this close to its tangency is given up
@@ -212,8 +216,13 @@ def angle_residual(triad: Triad, known: tuple, c, s, side: float) -> tuple:
     return f, df, p1x, p1y, dp1x, dp1y, h2 * ww / (l1 * l1)
 
 
-def _coarse_newton(triad: Triad, known: tuple, phi: float, side: float) -> float | None:
-    """Newton on one pose from ``phi`` (floats); None if it does not settle off the tangency."""
+def _coarse_newton(triad: Triad, known: tuple, phi: float, side: float) -> tuple | None:
+    """Newton on one pose from ``phi`` (floats); None if it does not settle off the tangency.
+
+    Returns the root and how much f′ changed on the way from ``phi``, relative
+    to f′ at the root (see :data:`_BASIN`).
+    """
+    first = None
     for _ in range(_ITERATIONS):
         try:
             f, df, *_, gap = angle_residual(triad, known, math.cos(phi), math.sin(phi), side)
@@ -221,10 +230,11 @@ def _coarse_newton(triad: Triad, known: tuple, phi: float, side: float) -> float
             return None
         if df == 0.0:
             return None
+        first = df if first is None else first
         step = -f / df
         phi += step
         if abs(step) <= _SETTLED:
-            return phi if gap > _TANGENCY else None
+            return (phi, abs(df - first) / abs(df)) if gap > _TANGENCY else None
     return None
 
 
@@ -268,13 +278,14 @@ def _coarse_roots(
             continue
         pose = tuple(float(x[j]) if isinstance(x, np.ndarray) else x for x in known)
         guess = _extrapolated(at, roots, here)
-        phi = _coarse_newton(triad, pose, guess, side)
-        if phi is None or abs(phi - guess) > _COARSE_JUMP:
+        found = _coarse_newton(triad, pose, guess, side)
+        phi, bend = found if found is not None else (guess, math.inf)
+        if bend > _BASIN or abs(phi - guess) > _COARSE_JUMP:
             if j == last + 1:
                 return None
             stride /= 2
             continue
-        if abs(phi - guess) < _COARSE_JUMP / 8:
+        if bend < _BASIN / 4 and abs(phi - guess) < _COARSE_JUMP / 8:
             stride = min(2 * stride, COARSE_STEP)
         at.append(here)
         roots.append(phi)
@@ -312,18 +323,19 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
     if coarse is None:
         return None
     start = np.interp(distance, *coarse)
-    phi = start
+    phi, first = start, None
     for _ in range(_ITERATIONS):
         c, s = np.cos(phi), np.sin(phi)
         with np.errstate(divide="ignore", invalid="ignore"):
             f, df, p1x, p1y, dp1x, dp1y, gap = angle_residual(triad, known, c, s, triad.side)
             step = -f / df
+        first = df if first is None else first
         phi = phi + step
         if np.all(np.abs(step) <= _SETTLED):
             break
     else:
         return None
-    if not np.all(gap > _TANGENCY):
+    if not (np.all(gap > _TANGENCY) and np.all(np.abs(df - first) <= _BASIN * np.abs(df))):
         return None
     c, s = c - s * step, s + c * step
     p1x, p1y = p1x + dp1x * step, p1y + dp1y * step

@@ -168,3 +168,36 @@ def test_a_dead_centre_is_reported_as_the_general_newton_reports_it(monkeypatch)
         errors.append((type(caught.value), str(caught.value)))
     assert errors[0] == errors[1]
     assert issubclass(errors[0][0], SingularPoseError) or "cannot be assembled" in errors[0][1]
+
+
+# a triad sketched near a dead centre (found by a random search): its two assembly modes lie
+# close together there, and a coarse step from the sketch once landed in the other one
+NEAR_DEAD_CENTRE = """
+driver 1 omega=10
+0 1 R A
+1 3 R B
+3 2 R C
+2 4 R D
+4 0 R F
+2 5 R E
+5 0 R G
+point A 0.361579328894 0.421676859047
+point B 0.271452229441 0.357337678308
+point C 0.00230028586295 -0.462384834363
+point D -0.39755868862 0.0239233948746
+point E 0.356008304611 -0.0673654392883
+point F -0.496270637714 -0.287696893805
+point G 0.25997041822 -0.34158201147
+"""
+
+
+def test_near_a_dead_centre_the_sketchs_mode_is_kept(monkeypatch):
+    plan = make_plan(analyze(parse_edgelist(NEAR_DEAD_CENTRE.strip().splitlines())))
+    inputs = np.linspace(0.0, 0.3, 400)[:, None]
+    fast = solve_poses(plan, inputs)
+    slow = _by_newton(monkeypatch, plan, inputs)
+    for link in plan.steps[-1].links:
+        np.testing.assert_allclose(fast.q[link], slow.q[link], rtol=0, atol=1e-10)
+    # the sketch's own rates: θ3 leaves the sketch the way ω3 turns it (the other mode: back)
+    omega3 = solve_pose(plan).links["3"].omega
+    assert np.sign(fast.q["3"][1, 2]) == np.sign(omega3) != 0

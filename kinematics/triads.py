@@ -309,6 +309,21 @@ def _extrapolated(at: list[float], roots: list[float], x: float) -> float:
     )
 
 
+def _turned(c: np.ndarray, s: np.ndarray, phi: np.ndarray, step: np.ndarray) -> tuple:
+    """cos φ and sin φ after the rotation by ``step`` (φ the new angle).
+
+    For steps below 0.01 rad the rotation by ``step`` is applied with cos and
+    sin of ``step`` by their series to the δ⁶ and δ⁷ terms (the next ones are
+    below 3e-21): cheaper than two trigonometric functions, as exact.
+    """
+    if not np.all(np.abs(step) <= 1e-2):
+        return np.cos(phi), np.sin(phi)
+    d2 = step * step
+    cos = 1.0 - d2 * (0.5 - d2 * (1.0 / 24.0 - d2 / 720.0))
+    sin = step * (1.0 - d2 * (1.0 / 6.0 - d2 * (1.0 / 120.0 - d2 / 5040.0)))
+    return c * cos - s * sin, s * cos + c * sin
+
+
 def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | None:
     """The base's angle at every pose, its cosine and sine, and the pin P₁; None to give up.
 
@@ -324,8 +339,8 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
         return None
     start = np.interp(distance, *coarse)
     phi, first = start, None
+    c, s = np.cos(phi), np.sin(phi)
     for _ in range(_ITERATIONS):
-        c, s = np.cos(phi), np.sin(phi)
         with np.errstate(divide="ignore", invalid="ignore"):
             f, df, p1x, p1y, dp1x, dp1y, gap = angle_residual(triad, known, c, s, triad.side)
             step = -f / df
@@ -333,6 +348,7 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
         phi = phi + step
         if np.all(np.abs(step) <= _SETTLED):
             break
+        c, s = _turned(c, s, phi, step)
     else:
         return None
     if not (np.all(gap > _TANGENCY) and np.all(np.abs(df - first) <= _BASIN * np.abs(df))):

@@ -57,6 +57,7 @@ from .plan import GroupStep, SolvePlan
 
 __all__ = [
     "COARSE_STEP",
+    "SUSPECT",
     "Lead",
     "Triad",
     "angle_residual",
@@ -101,6 +102,7 @@ class Lead:
 
     @property
     def length(self) -> float:
+        """The distance between the lead's pins (m)."""
         return float(np.hypot(*(self.inner - self.outer)))
 
 

@@ -251,7 +251,7 @@ def _solve_poses(
         if dyads.frame_dyad(step, plan, frames, tables, pins, inputs, rates, watch):
             continue
         if not (guess and any(link in guess for link in step.links)):
-            suspect = triads.frame_triad(step, plan, frames, tables, inputs, rates)
+            suspect = triads.frame_triad(step, plan, frames, tables, pins, inputs, rates)
             if suspect is not None:
                 if suspect.any():
                     _screen(step, plan, q, inputs, np.flatnonzero(suspect))

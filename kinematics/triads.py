@@ -448,11 +448,29 @@ def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
     return frame
 
 
+def _outer_pin(frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead, rates: bool):
+    """``(x, y, vx, vy, ax, ay)`` of a lead's outer pin, from its known link's frame, once.
+
+    Kept in ``pins`` under ``(link, x, y)`` as the dyads keep theirs
+    (:class:`~kinematics.dyads.PinCache`); without ``rates`` only ``(x, y)``.
+    """
+    key = (lead.known, float(lead.outer[0]), float(lead.outer[1]))
+    found = pins.get(key)
+    if found is None:
+        frame = _known_frame(frames, tables, lead.known)
+        if rates:
+            found = pins[key] = frame.point(lead.outer)
+        else:
+            found = pins[key] = (*frame.position(lead.outer), None, None, None, None)
+    return found if rates else found[:2]
+
+
 def frame_triad(
     step: GroupStep,
     plan: SolvePlan,
     frames: dict[str, Frame],
     tables: tuple,
+    pins: dict,
     inputs: np.ndarray,
     rates: bool = True,
 ) -> np.ndarray | None:
@@ -460,7 +478,8 @@ def frame_triad(
 
     None when it does not apply (see the module's notes): the general Newton
     solves the group then. Otherwise each link's motion is added to
-    ``frames`` and declared in the ``(q, qd, qdd)`` ``tables``, and the poses
+    ``frames`` and declared in the ``(q, qd, qdd)`` ``tables``, the motions of
+    the pins on known links kept in ``pins``, and the poses
     whose conditioning measure (:func:`pin_rates`) is below :data:`SUSPECT`
     are returned (a boolean mask; none without ``rates``), for the caller to
     screen with the group's full Jacobian.
@@ -469,10 +488,7 @@ def frame_triad(
     distance = path_length(plan, inputs) if triad is not None else None
     if triad is None or distance is None or distance[-1] == 0.0:
         return None  # (every pose the sketch: the sketch is the answer, which Newton keeps exactly)
-    outer = []
-    for lead in triad.leads:
-        frame = _known_frame(frames, tables, lead.known)
-        outer.append(frame.point(lead.outer) if rates else frame.position(lead.outer))
+    outer = [_outer_pin(frames, tables, pins, lead, rates) for lead in triad.leads]
     found = _in_some_order(triad, outer, distance)
     if found is None:
         return None

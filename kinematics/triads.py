@@ -311,6 +311,34 @@ def _extrapolated(at: list[float], roots: list[float], x: float) -> float:
     )
 
 
+def _interpolated(at: np.ndarray, roots: np.ndarray, distance: np.ndarray) -> np.ndarray:
+    """The coarse roots interpolated at ``distance``: a cubic through four nodes per interval.
+
+    On the interval from node k to node k + 1, the cubic through nodes k − 1 …
+    k + 2 (the first or last four at the ends), from its divided differences
+    expanded about node k; with fewer than four nodes, a line.
+    """
+    m = len(at)
+    if m < 4:
+        return np.interp(distance, at, roots)
+    k = np.arange(m - 1)
+    low = np.clip(k - 1, 0, m - 4)
+    xs = [at[low + i] - at[k] for i in range(4)]  # the four nodes, about node k
+    ys = [roots[low + i] for i in range(4)]
+    for order in range(1, 4):  # divided differences, in place: ys[i] = f[x_0 … x_i]
+        for i in range(3, order - 1, -1):
+            ys[i] = (ys[i] - ys[i - 1]) / (xs[i] - xs[i - order])
+    coefficients = [ys[3]]
+    for i in (2, 1, 0):  # p ← p·(t − x_i) + f[x_0 … x_i], coefficients of 1, t, t², …
+        shifted = [np.zeros(m - 1), *coefficients]
+        coefficients = [a - xs[i] * b for a, b in zip(shifted, [*coefficients, 0.0], strict=True)]
+        coefficients[0] = coefficients[0] + ys[i]
+    seg = np.clip(np.searchsorted(at, distance, side="right") - 1, 0, m - 2)
+    t = distance - at[seg]
+    c0, c1, c2, c3 = (c[seg] for c in coefficients)
+    return ((c3 * t + c2) * t + c1) * t + c0
+
+
 def _turned(c: np.ndarray, s: np.ndarray, phi: np.ndarray, step: np.ndarray) -> tuple:
     """cos φ and sin φ after the rotation by ``step`` (φ the new angle).
 
@@ -339,7 +367,7 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
     coarse = _coarse_roots(triad, known, distance)
     if coarse is None:
         return None
-    start = np.interp(distance, *coarse)
+    start = _interpolated(*coarse, distance)
     phi, first = start, None
     c, s = np.cos(phi), np.sin(phi)
     for _ in range(_ITERATIONS):

@@ -262,7 +262,8 @@ def _coarse_roots(
 
     Each coarse pose lies at most a stride further along the path than the
     last; Newton there starts from an extrapolation of the roots before it
-    and must settle within :data:`_COARSE_JUMP` of it. The stride starts at
+    and must settle within :data:`_COARSE_JUMP` of it, inside the root's basin
+    (:data:`_BASIN`). The stride starts at
     :data:`COARSE_STEP` / 8, is halved where Newton lands too far (or does
     not settle), doubled up to :data:`COARSE_STEP` where it lands close: a
     step-size control, so that the coarse poses are dense where the triad

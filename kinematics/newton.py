@@ -284,6 +284,8 @@ def densified(plan: SolvePlan, inputs: np.ndarray) -> tuple[np.ndarray, np.ndarr
     previous = np.vstack([np.zeros((1, inputs.shape[1])), inputs[:-1]])
     jump = np.max(np.abs(inputs - previous) / scale, axis=1) if len(scale) else np.zeros(0)
     pieces = np.maximum(1, np.ceil(jump / CONTINUATION_STEP)).astype(int)
+    if not len(pieces) or int(pieces.max()) == 1:  # no step is too long: the rows as they are
+        return inputs, np.arange(len(inputs))
     picks = np.cumsum(pieces) - 1
     # row i's pieces: previous_i + (input_i − previous_i)·k/pieces_i, k = 1 … pieces_i
     owner = np.repeat(np.arange(len(inputs)), pieces)

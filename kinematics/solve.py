@@ -7,8 +7,10 @@ from their input; then each Assur group, in solve order, is
 
 * positioned: dyads in closed form, vectorised over all poses, with the
   sketch's assembly mode (the sign of the square root; :mod:`kinematics.dyads`),
-  other groups by Newton's method on their own equations, following the inputs
-  from the sketch (:mod:`kinematics.newton`);
+  class III triads of revolute pairs through one unknown, their base link's
+  angle, with their rates in closed form (:mod:`kinematics.triads`), other
+  groups by Newton's method on their own equations, following the inputs from
+  the sketch (:mod:`kinematics.newton`);
 * given its velocities from ``J_g·q̇_g = −J_k·q̇_k`` (``k``: the known links its
   external pairs touch) and its accelerations from
   ``J_g·q̈_g = −J_k·q̈_k − (dJ/dt)·q̇``, as batched linear solves (RRR and RRP
@@ -37,7 +39,7 @@ import numpy as np
 
 from structure.errors import MechanismError
 
-from . import branches, dyads
+from . import branches, dyads, triads
 from .equations import group_system
 from .errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import Frame, LinkTable
@@ -248,6 +250,12 @@ def _solve_poses(
         # looked up on the module at call time, so a test can switch a closed form off
         if dyads.frame_dyad(step, plan, frames, tables, pins, inputs, rates, watch):
             continue
+        if not (guess and any(link in guess for link in step.links)):
+            suspect = triads.frame_triad(step, plan, frames, tables, pins, inputs, rates)
+            if suspect is not None:
+                if suspect.any():
+                    _screen(step, plan, q, inputs, np.flatnonzero(suspect))
+                continue
         if not dyads.place_dyad(step, plan, q, inputs):
             start = {
                 link: np.array(guess[link], dtype=float) if guess and link in guess else np.zeros(3)
@@ -287,12 +295,8 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
     _, jac, known_v, _ = group_system(step.links, step.equations, q, qd, n)
     angles = angle_rows(step.equations)
     scaled = scaled_jacobian(jac, plan.length, angles)
-    ratio = _conditioning(scaled)
-    if step.group is not None and (ratio <= DEAD_CENTRE).any():
-        k = int(np.argmax(ratio <= DEAD_CENTRE))
-        raise SingularPoseError.at(
-            step.label, inputs[k], f"σ_min/σ_max = {ratio[k]:.2g}", plan.driver_kinds
-        )
+    if step.group is not None:
+        _no_dead_centre(step, plan, _conditioning(scaled), inputs)
     z_dot = _rate_solve(jac, scaled, plan.length, angles, -known_v[..., None])[..., 0]
     for i, link in enumerate(step.links):
         qd[link] = z_dot[:, 3 * i : 3 * i + 3]
@@ -301,6 +305,30 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
     z_ddot = _rate_solve(jac, scaled, plan.length, angles, (-known_a - bias)[..., None])[..., 0]
     for i, link in enumerate(step.links):
         qdd[link] = z_ddot[:, 3 * i : 3 * i + 3]
+
+
+def _no_dead_centre(step: GroupStep, plan: SolvePlan, ratio: np.ndarray, inputs: np.ndarray):
+    """Raise at the first of ``inputs`` whose Jacobian's σ_min/σ_max ``ratio`` is a dead centre."""
+    if (ratio <= DEAD_CENTRE).any():
+        k = int(np.argmax(ratio <= DEAD_CENTRE))
+        raise SingularPoseError.at(
+            step.label, inputs[k], f"σ_min/σ_max = {ratio[k]:.2g}", plan.driver_kinds
+        )
+
+
+def _screen(step: GroupStep, plan: SolvePlan, q, inputs: np.ndarray, rows: np.ndarray) -> None:
+    """A closed-form triad's suspect ``rows`` screened as :func:`_rates` screens every pose.
+
+    Raises
+    ------
+    SingularPoseError
+        The group's scaled Jacobian loses rank at one of the rows.
+    """
+    touched = {link for eq in step.equations for link in (eq.a, eq.b)}
+    part = {link: q[link][rows] for link in touched if link in q}
+    _, jac, _, _ = group_system(step.links, step.equations, part, {}, len(rows))
+    scaled = scaled_jacobian(jac, plan.length, angle_rows(step.equations))
+    _no_dead_centre(step, plan, _conditioning(scaled), inputs[rows])
 
 
 def _conditioning(jac: np.ndarray) -> np.ndarray:

@@ -32,6 +32,8 @@ from __future__ import annotations
 import heapq
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
+from operator import itemgetter
 
 import networkx as nx
 from networkx.utils import UnionFind
@@ -133,7 +135,9 @@ class Decomposition:
     """Groups in solve order, their dependency DAG, and what was set aside.
 
     ``dag`` has one node per group index; an edge ``i -> j`` means group ``j``
-    is attached to a link of group ``i``. ``removed_links`` and
+    is attached to a link of group ``i``. ``dag_edges`` are its edges in the
+    order ``dag.edges`` gives them (by source, then as found); the networkx
+    graph is built from them on first use. ``removed_links`` and
     ``removed_pairs`` are the redundant links/pairs left out of the
     decomposition (``mechanism`` is what remains).
     """
@@ -141,9 +145,17 @@ class Decomposition:
     mechanism: Mechanism
     drivers: tuple[str, ...]
     groups: tuple[AssurGroup, ...]
-    dag: nx.DiGraph = field(repr=False)
+    dag_edges: tuple[tuple[int, int], ...] = field(repr=False)
     removed_links: tuple[str, ...] = ()
     removed_pairs: tuple[int, ...] = ()
+
+    @cached_property
+    def dag(self) -> nx.DiGraph:
+        """The groups' dependency DAG: a frozen ``DiGraph`` on the group indices."""
+        group_dag = nx.DiGraph()
+        group_dag.add_nodes_from(range(len(self.groups)))
+        group_dag.add_edges_from(self.dag_edges)
+        return nx.freeze(group_dag)
 
     @property
     def mechanism_class(self) -> int:
@@ -478,12 +490,9 @@ def _decomposition(
         _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b], compound))
         for b in order
     )
-    group_dag = nx.DiGraph()
-    group_dag.add_nodes_from(range(len(groups)))
-    group_dag.add_edges_from((index[u], index[v]) for u, v in edges)
-    return Decomposition(
-        mechanism, tuple(drivers), groups, nx.freeze(group_dag), removed_links, removed_pairs
-    )
+    # by source, then in the order found: the order of a DiGraph's edges built from them
+    dag_edges = tuple(sorted(((index[u], index[v]) for u, v in edges), key=itemgetter(0)))
+    return Decomposition(mechanism, tuple(drivers), groups, dag_edges, removed_links, removed_pairs)
 
 
 def _topological_order(

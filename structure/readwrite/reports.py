@@ -24,6 +24,7 @@ from ..assur import AssurGroup, roman
 from ..errors import MobilityError
 from ..mobility import Mobility
 from ..report import DriverChoice, StructuralReport
+from ..utils import paused_gc
 
 __all__ = [
     "LARGE_REPORT",
@@ -197,7 +198,7 @@ def _report_items(
         },
     )
     yield "groups", (_group_dict(g) for g in report.groups)
-    yield "group_dag", (list(e) for e in report.dag.edges)
+    yield "group_dag", (list(e) for e in report.decomposition.dag_edges)
     yield "mechanism_class", report.mechanism_class
     yield "formula", report.formula
     yield "textbook_formula", report.textbook_formula
@@ -251,6 +252,14 @@ def write_report_json(
         stream.write(json.dumps(report_to_dict(report, choices), indent=2, ensure_ascii=False))
         stream.write("\n")
         return
+    with paused_gc():  # the items are short-lived: no collector passes over the whole heap
+        _write_compact(report, stream, choices)
+
+
+def _write_compact(
+    report: StructuralReport, stream: TextIO, choices: Sequence[DriverChoice]
+) -> None:
+    """The report as compact JSON, its long lists one item at a time."""
     dumps = json.JSONEncoder(ensure_ascii=False, separators=(",", ":")).encode
     sep = "{"
     for key, value in _report_items(report, choices):

@@ -220,6 +220,9 @@ def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
         if key in options:
             raise _grammar_problem(kind, a, b, options, f"option {key!r} given twice")
         options[key] = value
+    if not options and not gear:  # most lines: make_pair's one check, without its dispatch
+        check_pair_links(a, b)
+        return Pair(pair_id, kind, a, b, point, line_no=line_no)
     if not options:
         return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no)
     typed = {key: _OPTION_READERS.get(key, str)(text) for key, text in options.items()}

@@ -16,6 +16,7 @@ Structural formula: I(1) → II(2,3)
 
 from __future__ import annotations
 
+import itertools
 import json
 from collections.abc import Iterator, Sequence
 from typing import Any, TextIO
@@ -269,10 +270,17 @@ def _write_compact(
             stream.write(dumps(value))
             continue
         stream.write("[")
-        for i, item in enumerate(value):
-            stream.write(f",{dumps(item)}" if i else dumps(item))
+        sep_items = ""
+        while chunk := list(itertools.islice(value, _CHUNK)):
+            # a list's compact text is its items' joined by commas, in brackets
+            stream.write(sep_items + dumps(chunk)[1:-1])
+            sep_items = ","
         stream.write("]")
     stream.write("}\n")
+
+
+#: items of a long list encoded in one call (a few hundred kB of text at most)
+_CHUNK = 1000
 
 
 def mobility_error_dict(error: MobilityError) -> dict[str, Any]:

@@ -32,6 +32,7 @@ from __future__ import annotations
 import heapq
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 from .errors import DecompositionError, MobilityError
@@ -149,7 +150,7 @@ class Decomposition:
     removed_links: tuple[str, ...] = ()
     removed_pairs: tuple[int, ...] = ()
 
-    @property
+    @cached_property
     def dag(self) -> nx.DiGraph:
         """The dependency DAG: one node per group index, the edges ``dag_edges``."""
         import networkx as nx

@@ -58,6 +58,7 @@ _SLIDER_SHARE = 0.2  # chance that an external pair of a triad / class IV group 
 _RECENT = 8  # window of recent links for the "deep" choice of a known link
 
 _R, _P = PairKind.R, PairKind.P
+_SLIDE_ANGLES = 1801  # distinct slide angles at 0.1 degree: 0.0, 0.1, ..., 180.0
 
 
 class _Builder:
@@ -108,7 +109,9 @@ class _Builder:
     def _slider(self, a: str, b: str) -> None:
         self.n_p += 1
         angle = round(self.rng.uniform(0.0, 180.0), 1)
-        while angle in self.slide_angles:  # parallel slides would make a singular sketch
+        # parallel slides would make a singular sketch; past the 1801 angles of 0.0..180.0
+        # a repeat is unavoidable (and harmless: a large mechanism's rank is generic)
+        while angle in self.slide_angles and len(self.slide_angles) < _SLIDE_ANGLES:
             angle = round(self.rng.uniform(0.0, 180.0), 1)
         self.slide_angles.add(angle)
         self._add(_P, a, b, f"S{self.n_p}", angle)

@@ -26,6 +26,7 @@ here as before.
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -499,27 +500,27 @@ class Mechanism:
     source: str = "<python>"
     loads: tuple[Load, ...] = ()
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
-    hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
+    shared_hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
     _by_id: dict[int, Pair] = field(init=False, repr=False, compare=False)
-    _by_link: dict[str, list[Pair]] = field(init=False, repr=False, compare=False)
+    _by_link: dict[str, tuple[Pair, ...]] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        # one record per pair, no more: a large file's memory is its pairs (issue 11)
         object.__setattr__(self, "points", MappingProxyType(dict(self.points)))
-        seen: dict[str, None] = {self.ground: None}
-        for p in self.pairs:
-            seen.setdefault(p.a)
-            seen.setdefault(p.b)
-        links = tuple(seen)
-        object.__setattr__(self, "links", links)
-        object.__setattr__(self, "hinges", _hinges(self.pairs))
-        object.__setattr__(self, "_by_id", {p.id: p for p in self.pairs})
-        by_link: dict[str, list[Pair]] = {link: [] for link in links}
-        for p in self.pairs:
-            by_link[p.a].append(p)
-            by_link[p.b].append(p)
-        object.__setattr__(self, "_by_link", by_link)
-        compound = {h.point: h for h in self.hinges if len(h.links) > 2}
+        pairs = self.pairs
+        by_link: dict[str, list[Pair]] = {self.ground: []}
+        for p in pairs:
+            by_link.setdefault(p.a, []).append(p)
+            by_link.setdefault(p.b, []).append(p)
+        object.__setattr__(self, "links", tuple(by_link))
+        object.__setattr__(self, "_by_link", {k: tuple(v) for k, v in by_link.items()})
+        del by_link
+        in_place = all(p.id == k for k, p in enumerate(pairs, start=1))
+        object.__setattr__(self, "_by_id", {} if in_place else {p.id: p for p in pairs})
+        shared = _shared_hinges(pairs)
+        object.__setattr__(self, "shared_hinges", shared)
+        compound = {h.point: h for h in shared if len(h.links) > 2}
         object.__setattr__(self, "compound_hinges", MappingProxyType(compound))
 
     # ------------------------------------------------------------------ build
@@ -669,7 +670,24 @@ class Mechanism:
 
     def pair(self, pair_id: int) -> Pair:
         """The pair with id ``pair_id``."""
-        return self._by_id[pair_id]
+        if self._by_id:
+            return self._by_id[pair_id]
+        try:  # every id is its pair's position (the usual case): no table is kept
+            position = operator.index(pair_id)
+        except TypeError:
+            raise KeyError(pair_id) from None
+        if not 0 < position <= len(self.pairs):
+            raise KeyError(pair_id)
+        return self.pairs[position - 1]
+
+    @cached_property
+    def hinges(self) -> tuple[Hinge, ...]:
+        """Every revolute joint as a :class:`Hinge`: each unnamed pin, then each named point.
+
+        Built on first use (a large mechanism's analysis needs only
+        :attr:`shared_hinges`).
+        """
+        return _hinges(self.pairs)
 
     def coordinates(self, point: str) -> tuple[float, float] | None:
         p = self.points.get(point)
@@ -678,6 +696,30 @@ class Mechanism:
     def __repr__(self) -> str:
         title = f" {self.name!r}" if self.name else ""
         return f"<Mechanism{title}: {len(self.moving_links)} moving links, {len(self.pairs)} pairs>"
+
+
+def _shared_hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:
+    """The hinges whose point two or more revolute pairs name, as in :func:`_hinges`."""
+    first: dict[str, Pair] = {}
+    several: dict[str, list[Pair]] = {}
+    r_kind = PairKind.R
+    for p in pairs:
+        if p.kind is r_kind and p.point is not None:
+            known = first.setdefault(p.point, p)
+            if known is not p:
+                several.setdefault(p.point, [known]).append(p)
+    if not several:
+        return ()
+    out: list[Hinge] = []
+    for point in first:  # in the order the points first appear
+        group = several.get(point)
+        if group is not None:
+            links: dict[str, None] = {}
+            for p in group:
+                links.setdefault(p.a)
+                links.setdefault(p.b)
+            out.append(Hinge(point, tuple(links), tuple(p.id for p in group)))
+    return tuple(out)
 
 
 def _hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:

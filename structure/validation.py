@@ -376,9 +376,7 @@ def _pieces(nodes: Iterable[str], edges: Iterable[tuple[str, str]]) -> list[set[
 
 def _hinge_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
     """The pairs at one point connect all its links, and close no cycle."""
-    for h in m.hinges:
-        if len(h.pairs) < 2:
-            continue
+    for h in m.shared_hinges:
         parts = _pieces(h.links, [m.pair(i).links for i in h.pairs])
         if len(parts) > 1:
             first = m.pair(h.pairs[0])

@@ -50,7 +50,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..errors import EdgeListError, EdgeListProblem, StatementError
+from ..errors import EdgeListError, EdgeListProblem, NumberError, StatementError
 from ..expressions import read_number
 from ..kinds import LoadKind, PairKind
 from ..model import (
@@ -220,6 +220,9 @@ def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
         if key in options:
             raise _grammar_problem(kind, a, b, options, f"option {key!r} given twice")
         options[key] = value
+    if not options and not gear:  # most lines: make_pair's one check, without its dispatch
+        check_pair_links(a, b)
+        return Pair(pair_id, kind, a, b, point, line_no=line_no)
     if not options:
         return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no)
     typed = {key: _OPTION_READERS.get(key, str)(text) for key, text in options.items()}
@@ -314,10 +317,9 @@ def _load(tokens: list[str], line_no: int) -> Load:
     for text in texts:
         try:
             value, written = _number_or_expression(text)
-        except ValueError:
-            raise StatementError(
-                f"{usage}: numbers must be finite (or exact expressions like 500*sqrt(2))"
-            ) from None
+        except ValueError as exc:
+            generic = f"{usage}: numbers must be finite (or exact expressions like 500*sqrt(2))"
+            raise StatementError(_with_reason(generic, exc)) from None
         values.append(value)
         exact.append(written)
     link = "" if link_at is None else tokens[link_at]
@@ -327,12 +329,31 @@ def _load(tokens: list[str], line_no: int) -> Load:
 
 
 def _number_or_expression(text: str) -> tuple[float, str | None]:
-    """A finite decimal (no text kept), or an exact expression (kept as written)."""
+    """A finite decimal (no text kept), or an exact expression (kept as written).
+
+    Raises
+    ------
+    NumberError
+        The text is neither, with :func:`~structure.expressions.read_number`'s
+        reason (bad syntax, too long, too deep, too many digits, too large an
+        exponent, not finite).
+    """
     try:
         return _number(text), None
     except ValueError:
         value, _ = read_number(text)
         return value, text
+
+
+def _with_reason(generic: str, error: ValueError) -> str:
+    """``generic``, followed by the expression reader's own reason when it gave one.
+
+    >>> _with_reason("numbers must be finite", NumberError("'1e999' has an exponent beyond ±400"))
+    "numbers must be finite: '1e999' has an exponent beyond ±400"
+    """
+    if isinstance(error, NumberError):
+        return f"{generic}: {error.reason}"
+    return generic
 
 
 def _driver(tokens: list[str], line_no: int) -> Driver:
@@ -366,16 +387,23 @@ def _point(tokens: list[str], line_no: int) -> PointDef:
         on = value
     values: list[float] = []
     exact: list[str | None] = []
+    unread: ValueError | None = None
     for token in tokens[2:4]:
         try:
             value, written = _number_or_expression(token)
-        except ValueError:
+        except ValueError as exc:
             value, written = math.nan, None  # make_point refuses it
+            unread = unread or exc
         values.append(value)
         exact.append(written)
-    return make_point(
-        tokens[1], values[0], values[1], on, line_no=line_no, exact=(exact[0], exact[1])
-    )
+    try:
+        return make_point(
+            tokens[1], values[0], values[1], on, line_no=line_no, exact=(exact[0], exact[1])
+        )
+    except StatementError as refused:
+        if unread is None:
+            raise
+        raise StatementError(_with_reason(refused.reason, unread)) from None
 
 
 def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:

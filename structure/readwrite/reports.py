@@ -16,6 +16,7 @@ Structural formula: I(1) → II(2,3)
 
 from __future__ import annotations
 
+import itertools
 import json
 from collections.abc import Iterator, Sequence
 from typing import Any, TextIO
@@ -24,6 +25,7 @@ from ..assur import AssurGroup, roman
 from ..errors import MobilityError
 from ..mobility import Mobility
 from ..report import DriverChoice, StructuralReport
+from ..utils import paused_gc
 
 __all__ = [
     "LARGE_REPORT",
@@ -251,6 +253,14 @@ def write_report_json(
         stream.write(json.dumps(report_to_dict(report, choices), indent=2, ensure_ascii=False))
         stream.write("\n")
         return
+    with paused_gc():  # the items are short-lived: no collector passes over the whole heap
+        _write_compact(report, stream, choices)
+
+
+def _write_compact(
+    report: StructuralReport, stream: TextIO, choices: Sequence[DriverChoice]
+) -> None:
+    """The report as compact JSON, its long lists one item at a time."""
     dumps = json.JSONEncoder(ensure_ascii=False, separators=(",", ":")).encode
     sep = "{"
     for key, value in _report_items(report, choices):
@@ -260,10 +270,17 @@ def write_report_json(
             stream.write(dumps(value))
             continue
         stream.write("[")
-        for i, item in enumerate(value):
-            stream.write(f",{dumps(item)}" if i else dumps(item))
+        sep_items = ""
+        while chunk := list(itertools.islice(value, _CHUNK)):
+            # a list's compact text is its items' joined by commas, in brackets
+            stream.write(sep_items + dumps(chunk)[1:-1])
+            sep_items = ","
         stream.write("]")
     stream.write("}\n")
+
+
+#: items of a long list encoded in one call (a few hundred kB of text at most)
+_CHUNK = 1000
 
 
 def mobility_error_dict(error: MobilityError) -> dict[str, Any]:

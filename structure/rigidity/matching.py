@@ -22,11 +22,18 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+import numpy as np
+
 __all__ = ["Matcher", "irreducible_blocks"]
 
 
 class Matcher:
     """Incremental maximum b-matching of row blocks to unknown blocks.
+
+    ``assigned[r]`` are the unknown blocks row ``r`` is matched to (one entry
+    per unit) and ``owners[u]`` the rows matched to unknown ``u`` (one entry
+    per unit), both as tuples: most rows and unknowns hold one or two units,
+    and a tuple of them is half a list's size (an empty one costs nothing).
 
     >>> m = Matcher([2, 1])              # unknown capacities
     >>> m.add_row((0, 1), 2), m.add_row((0,), 1), m.add_row((1,), 1)
@@ -37,13 +44,17 @@ class Matcher:
 
     def __init__(self, capacities: Sequence[int]):
         self.cap = list(capacities)
-        self.load = [0] * len(self.cap)
-        self.owners: list[list[int]] = [[] for _ in self.cap]
+        self.owners: list[tuple[int, ...]] = [()] * len(self.cap)
         self.adj: list[tuple[int, ...]] = []
-        self.assigned: list[list[int]] = []
+        self.assigned: list[tuple[int, ...]] = []
         self._useen = [0] * len(self.cap)
         self._rseen: list[int] = []
         self._stamp = 0
+
+    @property
+    def load(self) -> list[int]:
+        """Units of each unknown block matched so far."""
+        return [len(rows) for rows in self.owners]
 
     def add_row(self, adj: tuple[int, ...], size: int) -> int:
         """Add a row block and match as many of its ``size`` units as possible.
@@ -52,12 +63,13 @@ class Matcher:
         """
         r = len(self.adj)
         self.adj.append(adj)
-        self.assigned.append([])
+        self.assigned.append(())
         self._rseen.append(0)
+        owners, cap = self.owners, self.cap
         got = 0
         for _ in range(size):
             for u in adj:  # cheap first try: a free unit next door
-                if self.load[u] < self.cap[u]:
+                if len(owners[u]) < cap[u]:
                     self._take(r, u)
                     got += 1
                     break
@@ -70,15 +82,13 @@ class Matcher:
     def remove_row(self, r: int) -> None:
         """Unmatch row block ``r`` (it keeps its index but touches nothing)."""
         for u in self.assigned[r]:
-            self.owners[u].remove(r)
-            self.load[u] -= 1
-        self.assigned[r] = []
+            self.owners[u] = _without(self.owners[u], r)
+        self.assigned[r] = ()
         self.adj[r] = ()
 
     def _take(self, r: int, u: int) -> None:
-        self.load[u] += 1
-        self.owners[u].append(r)
-        self.assigned[r].append(u)
+        self.owners[u] += (r,)
+        self.assigned[r] += (u,)
 
     def _augment(self, r0: int) -> bool:
         """Find a shortest augmenting path from row ``r0`` (breadth first) and flip it.
@@ -89,12 +99,11 @@ class Matcher:
         """
         self._stamp += 1
         stamp = self._stamp
-        useen, rseen, adj, owners, load, cap = (
+        useen, rseen, adj, owners, cap = (
             self._useen,
             self._rseen,
             self.adj,
             self.owners,
-            self.load,
             self.cap,
         )
         rseen[r0] = stamp
@@ -109,7 +118,7 @@ class Matcher:
                         continue
                     useen[u] = stamp
                     reached_by[u] = r
-                    if load[u] < cap[u]:
+                    if len(owners[u]) < cap[u]:
                         self._flip(r0, r, u, reached_by, came_through)
                         return True
                     for r2 in owners[u]:
@@ -130,23 +139,29 @@ class Matcher:
     ) -> None:
         # r takes the free unit; each row on the path gives its unit to the row before it
         self._take(r, free_u)
+        owners, assigned = self.owners, self.assigned
         while r != r0:
             u = came_through[r]
             taker = reached_by[u]
-            self.owners[u].remove(r)
-            self.assigned[r].remove(u)
-            self.owners[u].append(taker)
-            self.assigned[taker].append(u)
+            owners[u] = (*_without(owners[u], r), taker)
+            assigned[r] = _without(assigned[r], u)
+            assigned[taker] += (u,)
             r = taker
 
     @property
     def free_units(self) -> list[tuple[int, int]]:
         """``(unknown block, free units)`` for every block not fully matched."""
         return [
-            (u, c - used)
-            for u, (c, used) in enumerate(zip(self.cap, self.load, strict=True))
-            if used < c
+            (u, c - len(rows))
+            for u, (c, rows) in enumerate(zip(self.cap, self.owners, strict=True))
+            if len(rows) < c
         ]
+
+
+def _without(items: tuple[int, ...], item: int) -> tuple[int, ...]:
+    """``items`` less the first ``item`` (as ``list.remove`` does)."""
+    k = items.index(item)
+    return items[:k] + items[k + 1 :]
 
 
 def irreducible_blocks(
@@ -164,39 +179,73 @@ def irreducible_blocks(
     order is deterministic. With ``as_successors=True``, ``adj`` is already
     the digraph (``adj[v]`` lists the successors of ``v``) and ``assigned``
     is ignored: plain strongly connected components, sources first.
+
+    >>> irreducible_blocks([(0,), (0, 1), (1, 2), (2, 1)], [[0], [1], [2], [1]], 3)
+    [[0], [1, 2]]
     """
-    succ = adj if as_successors else _dependency_digraph(adj, assigned, n_unknowns)
-    return _strongly_connected(succ, n_unknowns)
+    if as_successors:
+        sources = [v for v, succ in enumerate(adj) for _ in succ]
+        targets = [w for succ in adj for w in succ]
+    else:
+        sources, targets = _dependency_edges(adj, assigned)
+    start, flat = _adjacency_arrays(sources, targets, n_unknowns)
+    del sources, targets
+    return _strongly_connected(start, flat, n_unknowns)
 
 
-def _dependency_digraph(
-    adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]], n_unknowns: int
-) -> list[list[int]]:
-    """Successors of each unknown: ``w -> u`` when a row matched to ``u`` also touches ``w``."""
-    succ: list[list[int]] = [[] for _ in range(n_unknowns)]
+def _dependency_edges(
+    adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]]
+) -> tuple[list[int], list[int]]:
+    """``w -> u`` when a row matched to ``u`` also touches ``w``: sources and targets, in order.
+
+    Self-loops (``w == u``) are listed too; :func:`_adjacency_arrays` drops them.
+    """
+    sources: list[int] = []
+    targets: list[int] = []
     for r, units in enumerate(assigned):
         if not units:
             continue
         a = adj[r]
         first = units[0]
         if len(units) == 1 or all(u == first for u in units):
-            for w in a:
-                if w != first:
-                    succ[w].append(first)
+            sources.extend(a)
+            targets.extend([first] * len(a))
             continue
         for u in set(units):
-            for w in a:
-                if w != u:
-                    succ[w].append(u)
-    return succ
+            sources.extend(a)
+            targets.extend([u] * len(a))
+    return sources, targets
 
 
-def _strongly_connected(succ: Sequence[Sequence[int]], n_nodes: int) -> list[list[int]]:
-    """Strongly connected components, sources first (Tarjan, iterative); each one sorted."""
+def _adjacency_arrays(
+    sources: list[int], targets: list[int], n_nodes: int
+) -> tuple[list[int], list[int]]:
+    """Successor lists as one flat list: ``flat[start[v]:start[v + 1]]`` are ``v``'s, in order.
+
+    Two lists instead of one list per node: a large mechanism's digraph has
+    hundreds of thousands of nodes. Self-loops are dropped.
+    """
+    src = np.asarray(sources, dtype=np.int64)
+    dst = np.asarray(targets, dtype=np.int64)
+    keep = src != dst
+    src, dst = src[keep], dst[keep]
+    order = np.argsort(src, kind="stable")
+    start = np.zeros(n_nodes + 1, dtype=np.int64)
+    np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
+    return start.tolist(), dst[order].tolist()
+
+
+def _strongly_connected(start: list[int], flat: list[int], n_nodes: int) -> list[list[int]]:
+    """Strongly connected components, sources first (Tarjan, iterative); each one sorted.
+
+    The successors of ``v`` are ``flat[start[v]:start[v + 1]]``. A node whose
+    component is complete gets an index above every other, so that it never
+    lowers a link value again (no separate on-stack flags).
+    """
+    done = n_nodes + 1
     index = [-1] * n_nodes
     low = [0] * n_nodes
-    ptr = [0] * n_nodes
-    on_stack = [False] * n_nodes
+    ptr = start[:-1]
     stack: list[int] = []
     comps: list[list[int]] = []
     counter = 0
@@ -206,38 +255,42 @@ def _strongly_connected(succ: Sequence[Sequence[int]], n_nodes: int) -> list[lis
         index[root] = low[root] = counter
         counter += 1
         stack.append(root)
-        on_stack[root] = True
         call = [root]
         while call:
             v = call[-1]
-            s = succ[v]
-            i = ptr[v]
-            if i < len(s):
-                ptr[v] = i + 1
-                w = s[i]
-                if index[w] == -1:
-                    index[w] = low[w] = counter
-                    counter += 1
-                    stack.append(w)
-                    on_stack[w] = True
-                    call.append(w)
-                elif on_stack[w] and index[w] < low[v]:
-                    low[v] = index[w]
+            i, end, lv = ptr[v], start[v + 1], low[v]
+            w = -1
+            while i < end:
+                w = flat[i]
+                i += 1
+                iw = index[w]
+                if iw == -1:
+                    break
+                if iw < lv:
+                    lv = iw
+                w = -1
+            ptr[v], low[v] = i, lv
+            if w != -1:  # descend into the unvisited successor
+                index[w] = low[w] = counter
+                counter += 1
+                stack.append(w)
+                call.append(w)
                 continue
             call.pop()
             if call:
                 parent = call[-1]
-                if low[v] < low[parent]:
-                    low[parent] = low[v]
-            if low[v] == index[v]:
-                comp = []
-                while True:
-                    w = stack.pop()
-                    on_stack[w] = False
-                    comp.append(w)
-                    if w == v:
-                        break
-                comps.append(sorted(comp))
+                if lv < low[parent]:
+                    low[parent] = lv
+            if lv == index[v]:
+                k = len(stack) - 1
+                while stack[k] != v:
+                    k -= 1
+                comp = stack[k:]
+                del stack[k:]
+                for x in comp:
+                    index[x] = done
+                comp.sort()
+                comps.append(comp)
     # Tarjan finds sinks first
     comps.reverse()
     return comps

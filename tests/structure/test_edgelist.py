@@ -129,6 +129,29 @@ LINE_TEXT = [
 ]
 
 
+#: each limit of the exact-expression reader, and the words its own reason uses
+#: (structure.expressions: MAX_DEPTH 100, MAX_DIGITS 100, MAX_EXPONENT 400, MAX_LENGTH 1000)
+LIMIT_TOKENS = [
+    pytest.param("(" * 101 + "1" + ")" * 101, "deeper than 100", id="depth"),
+    pytest.param("-" * 101 + "1", "deeper than 100", id="depth-of-signs"),
+    pytest.param("1/" + "1" * 101, "more than 100 digits", id="digits"),
+    pytest.param("1e99999999", "exponent beyond ±400", id="exponent"),
+    pytest.param("1+" * 500 + "1", "longer than 1000 characters", id="length"),
+]
+
+
+@pytest.mark.parametrize(("token", "reason"), LIMIT_TOKENS)
+@pytest.mark.parametrize(
+    "line", ["point Z {} 0", "point Z 0 {}", "force 2 B {} 0", "mass 2 {} 0.1 B", "moment 2 {}"]
+)
+def test_an_expression_beyond_a_limit_is_refused_with_the_limit_it_passes(line, token, reason):
+    """The edge-list reader names the limit, not only that numbers must be finite (issue 11)."""
+    error = _error([*FOURBAR, line.format(token)])
+    assert len(error.problems) == 1 and error.line_no == 5
+    assert reason in error.reason
+    assert len(str(error)) < 1000
+
+
 @pytest.mark.parametrize(("lines", "text"), LINE_TEXT)
 def test_topology_problem_quotes_its_line(lines, text):
     error = _error(lines)

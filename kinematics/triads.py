@@ -51,6 +51,7 @@ from functools import cached_property
 
 import numpy as np
 
+from .dyads import PinCache
 from .frames import GROUND_FRAME, Frame, frame_of_columns
 from .newton import CONTINUATION_STEP
 from .plan import GroupStep, SolvePlan
@@ -398,7 +399,14 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
 # ---------------------------------------------------------------- rates and frames
 
 
-def pin_rates(triad: Triad, rotated: tuple, offsets: tuple, outer: tuple, length: float) -> tuple:
+def pin_rates(
+    triad: Triad,
+    rotated: tuple,
+    offsets: tuple,
+    outer: tuple,
+    length: float,
+    out: tuple = (None, None, None),
+) -> tuple:
     """The base's ω, ε and its pins' velocities and accelerations, at every pose.
 
     ``rotated`` is ``(R·d₁₂, R·d₁₃)``, ``offsets`` the three uᵢ = Pᵢ − Eᵢ,
@@ -406,42 +414,141 @@ def pin_rates(triad: Triad, rotated: tuple, offsets: tuple, outer: tuple, length
     ``(v_P₁, ω)`` solve the rows ``uᵢ·(v_P₁ + ω·J·R·d₁ᵢ) = uᵢ·v_Eᵢ`` (each lead
     keeps its length); ``(a_P₁, ε)`` the same rows, right-hand sides
     ``uᵢ·a_Eᵢ + ω²·uᵢ·R·d₁ᵢ − |v_Pᵢ − v_Eᵢ|²``: Cramer's rule, the adjugate
-    shared. Returns ``(ω, ε, velocities, accelerations, measure)``, the pins'
-    rates as ``(x, y)`` pairs and ``measure`` = |det| over the product of the
-    rows' norms (θ column × 1/``length``): zero where the leads' lines meet in
-    one point, the triad's singular pose.
+    shared. P₂ and P₃ then move as points of the base with P₁ (the
+    arithmetic of the base's :class:`~kinematics.frames.Frame`). Each pin's
+    ``(vx, vy, ax, ay)`` is written into its entry of ``out`` (four arrays;
+    fresh ones where it is None). Returns ``(ω, ε, velocities,
+    accelerations, measure)``, the pins' rates as ``(x, y)`` pairs and
+    ``measure`` = |det| over the product of the rows' norms (θ column ×
+    1/``length``): zero where the leads' lines meet in one point, the triad's
+    singular pose. In-place operations on a few arrays: at 10^4 poses and
+    more, fresh temporaries cost more (in page faults) than the arithmetic.
     """
-    (r2x, r2y), (r3x, r3y) = rotated
     (u1x, u1y), (u2x, u2y), (u3x, u3y) = offsets
-    t2, t3 = r2x * u2y - r2y * u2x, r3x * u3y - r3y * u3x  # uᵢ·(J·R·d₁ᵢ)
-    adj = (
-        (u2y * t3 - t2 * u3y, -u1y * t3, u1y * t2),
-        (t2 * u3x - u2x * t3, u1x * t3, -u1x * t2),
-        (u2x * u3y - u2y * u3x, u1y * u3x - u1x * u3y, u1x * u2y - u1y * u2x),
-    )
-    det = u1x * adj[0][0] + u1y * adj[1][0]
-    inverse = 1.0 / det
-
-    def solved(rhs: tuple) -> tuple:
-        return tuple((row[0] * rhs[0] + row[1] * rhs[1] + row[2] * rhs[2]) * inverse for row in adj)
-
-    arms = ((0.0, 0.0), (r2x, r2y), (r3x, r3y))
-    pairs = tuple(zip(offsets, outer, strict=True))
-    vx, vy, omega = solved(tuple(u[0] * e[2] + u[1] * e[3] for u, e in pairs))
-    velocities = tuple((vx - omega * ry, vy + omega * rx) for rx, ry in arms)
+    scratch = np.empty(np.shape(u1x))
+    t2 = _difference(rotated[0][0], u2y, rotated[0][1], u2x, scratch)  # uᵢ·(J·R·d₁ᵢ)
+    t3 = _difference(rotated[1][0], u3y, rotated[1][1], u3x, scratch)
+    adj = _adjugate(offsets, t2, t3, scratch)
+    det = u1x * adj[0][0]
+    det += np.multiply(u1y, adj[1][0], out=scratch)
+    inverse = np.divide(1.0, det)
+    targets = tuple(pin if pin is not None else (None,) * 4 for pin in out)
+    rhs = [_dot(u, e[2], e[3], scratch) for u, e in zip(offsets, outer, strict=True)]
+    vx, vy, omega = _solved(adj, rhs, inverse, scratch)
+    velocities = _on_base((vx, vy), omega, rotated, [pin[:2] for pin in targets], scratch)
+    del vx, vy, rhs
     w2 = omega * omega
-    rhs = []
-    for u, e, v, (rx, ry) in zip(offsets, outer, velocities, arms, strict=True):
-        dvx, dvy = v[0] - e[2], v[1] - e[3]
-        rhs.append(u[0] * e[4] + u[1] * e[5] + w2 * (u[0] * rx + u[1] * ry) - dvx * dvx - dvy * dvy)
-    ax, ay, epsilon = solved(tuple(rhs))
-    accelerations = tuple(
-        (ax - epsilon * ry - w2 * rx, ay + epsilon * rx - w2 * ry) for rx, ry in arms
-    )
+    rhs = [
+        _acceleration_rhs(u, e, v, arm, w2, scratch)
+        for u, e, v, arm in zip(offsets, outer, velocities, ((0.0, 0.0), *rotated), strict=True)
+    ]
+    ax, ay, epsilon = _solved(adj, rhs, inverse, scratch)
+    del adj, rhs, inverse
+    accelerations = _accelerated((ax, ay), epsilon, w2, rotated, [pin[2:] for pin in targets],
+                                 scratch)  # fmt: skip
+    del ax, ay
     l1, l2, l3 = (lead.length for lead in triad.leads)
     k = 1.0 / (length * length)
-    norms = l1 * np.sqrt((l2 * l2 + k * t2 * t2) * (l3 * l3 + k * t3 * t3))
-    return omega, epsilon, velocities, accelerations, np.abs(det) / (length * norms)
+    for t, lead_length in ((t2, l2), (t3, l3)):  # lᵢ² + k·tᵢ², in place
+        np.multiply(k, t, out=scratch)
+        np.multiply(scratch, t, out=t)
+        t += lead_length * lead_length
+    norms = np.multiply(t2, t3, out=t2)
+    np.sqrt(norms, out=norms)
+    np.multiply(l1, norms, out=norms)
+    np.multiply(length, norms, out=norms)
+    measure = np.abs(det, out=det)
+    measure /= norms
+    return omega, epsilon, velocities, accelerations, measure
+
+
+def _difference(a, b, c, d, scratch: np.ndarray) -> np.ndarray:
+    """``a·b − c·d`` in a fresh array, ``scratch`` overwritten."""
+    out = np.multiply(a, b)
+    out -= np.multiply(c, d, out=scratch)
+    return out
+
+
+def _adjugate(offsets: tuple, t2: np.ndarray, t3: np.ndarray, scratch: np.ndarray) -> tuple:
+    """The adjugate of the rows ``(uᵢx, uᵢy, tᵢ)`` (t₁ = 0), by rows of the inverse."""
+    (u1x, u1y), (u2x, u2y), (u3x, u3y) = offsets
+    minus_u1y_t3 = np.multiply(u1y, t3)
+    np.negative(minus_u1y_t3, out=minus_u1y_t3)  # (−u₁y)·t₃, as exact
+    minus_u1x_t2 = np.multiply(u1x, t2)
+    np.negative(minus_u1x_t2, out=minus_u1x_t2)
+    return (
+        (_difference(u2y, t3, t2, u3y, scratch), minus_u1y_t3, u1y * t2),
+        (_difference(t2, u3x, u2x, t3, scratch), u1x * t3, minus_u1x_t2),
+        (
+            _difference(u2x, u3y, u2y, u3x, scratch),
+            _difference(u1y, u3x, u1x, u3y, scratch),
+            _difference(u1x, u2y, u1y, u2x, scratch),
+        ),
+    )
+
+
+def _dot(u: tuple, x, y, scratch: np.ndarray) -> np.ndarray:
+    """``u·(x, y)`` in a fresh array."""
+    out = np.multiply(u[0], x)
+    out += np.multiply(u[1], y, out=scratch)
+    return out
+
+
+def _solved(adj: tuple, rhs: list, inverse: np.ndarray, scratch: np.ndarray) -> list:
+    """The unknowns for the right-hand sides ``rhs`` (the last one written over ``rhs[0]``)."""
+    out = []
+    for i, row in enumerate(adj):
+        value = np.multiply(row[0], rhs[0], out=rhs[0] if i == 2 else None)
+        value += np.multiply(row[1], rhs[1], out=scratch)
+        value += np.multiply(row[2], rhs[2], out=scratch)
+        value *= inverse
+        out.append(value)
+    return out
+
+
+def _on_base(v1: tuple, omega, rotated: tuple, targets: list, scratch: np.ndarray) -> tuple:
+    """The pins' velocities: P₁'s ``v1`` (+ ω·J·0), then P₂'s and P₃'s from P₁'s, into targets."""
+    tx, ty = targets[0]
+    x = np.subtract(v1[0], np.multiply(omega, 0.0, out=scratch), out=tx)
+    y = np.add(v1[1], np.multiply(omega, 0.0, out=scratch), out=ty)
+    out = [(x, y)]
+    for (rx, ry), (tx, ty) in zip(rotated, targets[1:], strict=True):
+        px = np.subtract(x, np.multiply(omega, ry, out=scratch), out=tx)
+        py = np.add(y, np.multiply(omega, rx, out=scratch), out=ty)
+        out.append((px, py))
+    return tuple(out)
+
+
+def _accelerated(
+    a1: tuple, epsilon, w2, rotated: tuple, targets: list, scratch: np.ndarray
+) -> tuple:
+    """The pins' accelerations: P₁'s ``a1``, then P₂'s and P₃'s from P₁'s, into targets."""
+    ax, ay = a1
+    x = np.subtract(ax, np.multiply(epsilon, 0.0, out=scratch), out=targets[0][0])
+    x -= np.multiply(w2, 0.0, out=scratch)
+    y = np.add(ay, np.multiply(epsilon, 0.0, out=scratch), out=targets[0][1])
+    y -= np.multiply(w2, 0.0, out=scratch)
+    out = [(x, y)]
+    for (rx, ry), (tx, ty) in zip(rotated, targets[1:], strict=True):
+        px = np.subtract(x, np.multiply(w2, rx, out=scratch), out=tx)
+        px -= np.multiply(epsilon, ry, out=scratch)
+        py = np.subtract(y, np.multiply(w2, ry, out=scratch), out=ty)
+        py += np.multiply(epsilon, rx, out=scratch)
+        out.append((px, py))
+    return tuple(out)
+
+
+def _acceleration_rhs(u: tuple, e: tuple, v: tuple, arm: tuple, w2, scratch) -> np.ndarray:
+    """``u·a_E + ω²·u·R·d − |v_P − v_E|²`` of one lead, in a fresh array."""
+    out = _dot(u, e[4], e[5], scratch)
+    along = _dot(u, arm[0], arm[1], scratch)
+    along *= w2
+    out += along
+    for k in (0, 1):
+        gap = np.subtract(v[k], e[2 + k], out=along)
+        gap *= gap
+        out -= gap
+    return out
 
 
 def _in_some_order(triad: Triad, outer: list, distance: np.ndarray) -> tuple | None:
@@ -477,21 +584,65 @@ def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
     return frame
 
 
-def _outer_pin(frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead, rates: bool):
+def _outer_position(frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead) -> tuple:
+    """``(x, y)`` of a lead's outer pin: the solve's, or from its known link's frame."""
+    found = pins.get((lead.known, float(lead.outer[0]), float(lead.outer[1])))
+    if found is not None:
+        return found[:2]
+    return _known_frame(frames, tables, lead.known).position(lead.outer)
+
+
+def _outer_pin(
+    frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead, rates: bool, inputs
+) -> tuple:
     """``(x, y, vx, vy, ax, ay)`` of a lead's outer pin, from its known link's frame, once.
 
     Kept in ``pins`` under ``(link, x, y)`` as the dyads keep theirs
-    (:class:`~kinematics.dyads.PinCache`); without ``rates`` only ``(x, y)``.
+    (:class:`~kinematics.dyads.PinCache`), written into its row of a sweep's
+    layout when it has one (under the known link or the lead); without
+    ``rates`` only ``(x, y)``. The positions are :func:`_outer_position`'s.
     """
-    key = (lead.known, float(lead.outer[0]), float(lead.outer[1]))
+    x, y = float(lead.outer[0]), float(lead.outer[1])
+    key = (lead.known, x, y)
     found = pins.get(key)
     if found is None:
         frame = _known_frame(frames, tables, lead.known)
-        if rates:
-            found = pins[key] = frame.point(lead.outer)
+        targets = None
+        if isinstance(pins, PinCache) and frame is not GROUND_FRAME:
+            targets = pins.targets((key, (lead.link, x, y)), inputs, rates)
+        if targets is not None:
+            frame.point_into(lead.outer, targets)
+            found = targets if rates else (*targets, None, None, None, None)
+        elif rates:
+            found = frame.point(lead.outer)
         else:
-            found = pins[key] = (*frame.position(lead.outer), None, None, None, None)
+            found = (*frame.position(lead.outer), None, None, None, None)
+        pins[key] = found
     return found if rates else found[:2]
+
+
+def _base_rows(pins: dict, triad: Triad, inputs: np.ndarray, rates: bool) -> tuple:
+    """Each base pin's row of a sweep's layout (under the base or its lead), or None."""
+    if not isinstance(pins, PinCache):
+        return (None, None, None)
+    keys = (
+        ((triad.base, float(x), float(y)), (lead.link, float(x), float(y)))
+        for lead in triad.leads
+        for x, y in (lead.inner,)
+    )
+    return tuple(pins.targets(pair, inputs, rates) for pair in keys)
+
+
+def _placed(p1: tuple, arm: tuple | None, row: tuple | None) -> tuple:
+    """A base pin's position: P₁ (``arm`` None) or P₁ + R·d₁ᵢ, written into ``row`` if given."""
+    if arm is None:
+        if row is None:
+            return p1
+        row[0][...] = p1[0]
+        row[1][...] = p1[1]
+        return row[0], row[1]
+    return (np.add(p1[0], arm[0], out=None if row is None else row[0]),
+            np.add(p1[1], arm[1], out=None if row is None else row[1]))  # fmt: skip
 
 
 def frame_triad(
@@ -517,24 +668,31 @@ def frame_triad(
     distance = path_length(plan, inputs) if triad is not None else None
     if triad is None or distance is None or distance[-1] == 0.0:
         return None  # (every pose the sketch: the sketch is the answer, which Newton keeps exactly)
-    outer = [_outer_pin(frames, tables, pins, lead, rates) for lead in triad.leads]
-    found = _in_some_order(triad, outer, distance)
+    where = [_outer_position(frames, tables, pins, lead) for lead in triad.leads]
+    found = _in_some_order(triad, where, distance)
+    del where
     if found is None:
         return None
-    triad, outer, (phi, c, s, p1x, p1y) = found
+    triad, _, (phi, c, s, p1x, p1y) = found
+    outer = [_outer_pin(frames, tables, pins, lead, rates, inputs) for lead in triad.leads]
+    rows = _base_rows(pins, triad, inputs, rates)
     rotated = tuple((c * dx - s * dy, s * dx + c * dy) for dx, dy in triad.arms)
-    pins = ((p1x, p1y), *((p1x + rx, p1y + ry) for rx, ry in rotated))
+    p1 = _placed((p1x, p1y), None, rows[0])
+    del p1x, p1y
+    pins = (p1, *(_placed(p1, arm, row) for arm, row in zip(rotated, rows[1:], strict=True)))
     suspect = np.zeros(len(inputs), dtype=bool)
     omega = epsilon = None
     velocities = accelerations = ((None, None),) * 3
     if rates:
         offsets = tuple((p[0] - e[0], p[1] - e[1]) for p, e in zip(pins, outer, strict=True))
+        targets = tuple(None if row is None else row[2:] for row in rows)
         omega, epsilon, velocities, accelerations, measure = pin_rates(
-            triad, rotated, offsets, tuple(outer), plan.length
+            triad, rotated, offsets, tuple(outer), plan.length, targets
         )
+        del offsets, rotated
         suspect = ~(measure > SUSPECT * (1.0 + _reach(triad) / plan.length) ** 2)
     frames[triad.base] = Frame(
-        triad.leads[0].inner, p1x, p1y, *velocities[0], *accelerations[0],
+        triad.leads[0].inner, *pins[0], *velocities[0], *accelerations[0],
         c, s, omega, epsilon, phi,
     )  # fmt: skip
     for lead, pin, e, v, a in zip(triad.leads, pins, outer, velocities, accelerations, strict=True):

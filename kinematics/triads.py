@@ -208,14 +208,19 @@ def angle_residual(triad: Triad, known: tuple, c, s, side: float) -> tuple:
     h2 = (l1 * l1) / ww - a * a
     h = side * abs(h2) ** 0.5
     u1x, u1y = a * wx - h * wy, a * wy + h * wx  # P₁ − E₁
+    del a  # (each value let go once used: over many poses, fewer arrays live at once)
     # dP₁/dφ = k·J·u₁ keeps |P₁E₁| and moves P₁ with C₂ (dC₂/dφ = −J·R·d₁₂):
     # k = (u₂·dC₂/dφ)/(u₁ × u₂) with u₂ = P₁ − C₂ = u₁ − w, and u₁ × u₂ = h·|w|²
     k = ((u1x - wx) * r2y - (u1y - wy) * r2x) / (h * ww)
+    del r2x, r2y, wx, wy, h
     dp1x, dp1y = -k * u1y, k * u1x
+    del k
     p1x, p1y = e1x + u1x, e1y + u1y
+    del u1x, u1y
     gx, gy = p1x + r3x - e3x, p1y + r3y - e3y
     f = gx * gx + gy * gy - l3 * l3
     df = 2.0 * (gx * (dp1x - r3y) + gy * (dp1y + r3x))
+    del gx, gy, r3x, r3y
     return f, df, p1x, p1y, dp1x, dp1y, h2 * ww / (l1 * l1)
 
 
@@ -373,6 +378,7 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
     phi, first = start, None
     c, s = np.cos(phi), np.sin(phi)
     for _ in range(_ITERATIONS):
+        f = df = p1x = p1y = dp1x = dp1y = gap = None  # the last pass's, let go before the next
         with np.errstate(divide="ignore", invalid="ignore"):
             f, df, p1x, p1y, dp1x, dp1y, gap = angle_residual(triad, known, c, s, triad.side)
             step = -f / df
@@ -432,21 +438,36 @@ def pin_rates(
     det = u1x * adj[0][0]
     det += np.multiply(u1y, adj[1][0], out=scratch)
     inverse = np.divide(1.0, det)
-    targets = tuple(pin if pin is not None else (None,) * 4 for pin in out)
-    rhs = [_dot(u, e[2], e[3], scratch) for u, e in zip(offsets, outer, strict=True)]
-    vx, vy, omega = _solved(adj, rhs, inverse, scratch)
-    velocities = _on_base((vx, vy), omega, rotated, [pin[:2] for pin in targets], scratch)
-    del vx, vy, rhs
-    w2 = omega * omega
+    measure = _measure(triad, det, t2, t3, length, scratch)
+    del det, t2, t3
+    # every pin's four arrays (fresh where ``out`` has none), the accelerations' ones
+    # holding the right-hand sides until the accelerations are written
+    (v1x, v1y, a1x, a1y), (v2x, v2y, a2x, a2y), (v3x, v3y, a3x, a3y) = (
+        pin if pin is not None else tuple(np.empty(scratch.shape) for _ in range(4))
+        for pin in out
+    )
     rhs = [
-        _acceleration_rhs(u, e, v, arm, w2, scratch)
-        for u, e, v, arm in zip(offsets, outer, velocities, ((0.0, 0.0), *rotated), strict=True)
+        _dot(u, e[2], e[3], scratch, spare)
+        for u, e, spare in zip(offsets, outer, (a1x, a1y, a2x), strict=True)
     ]
-    ax, ay, epsilon = _solved(adj, rhs, inverse, scratch)
+    _, _, omega = _solved(adj, rhs, inverse, scratch, (v1x, v1y))
+    velocities = _on_base(omega, rotated, ((v1x, v1y), (v2x, v2y), (v3x, v3y)), scratch)
+    w2 = omega * omega
+    arms = ((0.0, 0.0), *rotated)
+    rhs = [
+        _acceleration_rhs(u, e, v, arm, w2, scratch, (spare, a3y))
+        for u, e, v, arm, spare in zip(offsets, outer, velocities, arms, (a2x, a2y, a3x),
+                                       strict=True)
+    ]  # fmt: skip
+    _, _, epsilon = _solved(adj, rhs, inverse, scratch, (a1x, a1y))
     del adj, rhs, inverse
-    accelerations = _accelerated((ax, ay), epsilon, w2, rotated, [pin[2:] for pin in targets],
+    accelerations = _accelerated(epsilon, w2, rotated, ((a1x, a1y), (a2x, a2y), (a3x, a3y)),
                                  scratch)  # fmt: skip
-    del ax, ay
+    return omega, epsilon, velocities, accelerations, measure
+
+
+def _measure(triad: Triad, det, t2, t3, length: float, scratch: np.ndarray) -> np.ndarray:
+    """|det| over the product of the rows' norms; ``det``, ``t2`` and ``t3`` overwritten."""
     l1, l2, l3 = (lead.length for lead in triad.leads)
     k = 1.0 / (length * length)
     for t, lead_length in ((t2, l2), (t3, l3)):  # lᵢ² + k·tᵢ², in place
@@ -459,7 +480,7 @@ def pin_rates(
     np.multiply(length, norms, out=norms)
     measure = np.abs(det, out=det)
     measure /= norms
-    return omega, epsilon, velocities, accelerations, measure
+    return measure
 
 
 def _difference(a, b, c, d, scratch: np.ndarray) -> np.ndarray:
@@ -487,68 +508,64 @@ def _adjugate(offsets: tuple, t2: np.ndarray, t3: np.ndarray, scratch: np.ndarra
     )
 
 
-def _dot(u: tuple, x, y, scratch: np.ndarray) -> np.ndarray:
-    """``u·(x, y)`` in a fresh array."""
-    out = np.multiply(u[0], x)
+def _dot(u: tuple, x, y, scratch: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+    """``u·(x, y)``, in ``out`` (a fresh array if None)."""
+    out = np.multiply(u[0], x, out=out)
     out += np.multiply(u[1], y, out=scratch)
     return out
 
 
-def _solved(adj: tuple, rhs: list, inverse: np.ndarray, scratch: np.ndarray) -> list:
-    """The unknowns for the right-hand sides ``rhs`` (the last one written over ``rhs[0]``)."""
-    out = []
-    for i, row in enumerate(adj):
-        value = np.multiply(row[0], rhs[0], out=rhs[0] if i == 2 else None)
+def _solved(adj: tuple, rhs: list, inverse: np.ndarray, scratch: np.ndarray, out: tuple) -> list:
+    """The unknowns for the right-hand sides ``rhs``: the first two in ``out``, the third fresh."""
+    solution = []
+    for row, target in zip(adj, (*out, None), strict=True):
+        value = np.multiply(row[0], rhs[0], out=target)
         value += np.multiply(row[1], rhs[1], out=scratch)
         value += np.multiply(row[2], rhs[2], out=scratch)
         value *= inverse
-        out.append(value)
-    return out
+        solution.append(value)
+    return solution
 
 
-def _on_base(v1: tuple, omega, rotated: tuple, targets: list, scratch: np.ndarray) -> tuple:
-    """The pins' velocities: P₁'s ``v1`` (+ ω·J·0), then P₂'s and P₃'s from P₁'s, into targets."""
-    tx, ty = targets[0]
-    x = np.subtract(v1[0], np.multiply(omega, 0.0, out=scratch), out=tx)
-    y = np.add(v1[1], np.multiply(omega, 0.0, out=scratch), out=ty)
-    out = [(x, y)]
-    for (rx, ry), (tx, ty) in zip(rotated, targets[1:], strict=True):
-        px = np.subtract(x, np.multiply(omega, ry, out=scratch), out=tx)
-        py = np.add(y, np.multiply(omega, rx, out=scratch), out=ty)
-        out.append((px, py))
-    return tuple(out)
+def _on_base(omega, rotated: tuple, pins: tuple, scratch: np.ndarray) -> tuple:
+    """The pins' velocities, in ``pins``: P₁'s (solved, there) + ω·J·0, P₂'s and P₃'s from it."""
+    x, y = pins[0]
+    np.subtract(x, np.multiply(omega, 0.0, out=scratch), out=x)
+    np.add(y, np.multiply(omega, 0.0, out=scratch), out=y)
+    for (rx, ry), (px, py) in zip(rotated, pins[1:], strict=True):
+        np.subtract(x, np.multiply(omega, ry, out=scratch), out=px)
+        np.add(y, np.multiply(omega, rx, out=scratch), out=py)
+    return pins
 
 
-def _accelerated(
-    a1: tuple, epsilon, w2, rotated: tuple, targets: list, scratch: np.ndarray
-) -> tuple:
-    """The pins' accelerations: P₁'s ``a1``, then P₂'s and P₃'s from P₁'s, into targets."""
-    ax, ay = a1
-    x = np.subtract(ax, np.multiply(epsilon, 0.0, out=scratch), out=targets[0][0])
+def _accelerated(epsilon, w2, rotated: tuple, pins: tuple, scratch: np.ndarray) -> tuple:
+    """The pins' accelerations, in ``pins``: P₁'s (solved, there), P₂'s and P₃'s from it."""
+    x, y = pins[0]
+    np.subtract(x, np.multiply(epsilon, 0.0, out=scratch), out=x)
     x -= np.multiply(w2, 0.0, out=scratch)
-    y = np.add(ay, np.multiply(epsilon, 0.0, out=scratch), out=targets[0][1])
+    np.add(y, np.multiply(epsilon, 0.0, out=scratch), out=y)
     y -= np.multiply(w2, 0.0, out=scratch)
-    out = [(x, y)]
-    for (rx, ry), (tx, ty) in zip(rotated, targets[1:], strict=True):
-        px = np.subtract(x, np.multiply(w2, rx, out=scratch), out=tx)
+    for (rx, ry), (px, py) in zip(rotated, pins[1:], strict=True):
+        np.subtract(x, np.multiply(w2, rx, out=scratch), out=px)
         px -= np.multiply(epsilon, ry, out=scratch)
-        py = np.subtract(y, np.multiply(w2, ry, out=scratch), out=ty)
+        np.subtract(y, np.multiply(w2, ry, out=scratch), out=py)
         py += np.multiply(epsilon, rx, out=scratch)
-        out.append((px, py))
-    return tuple(out)
+    return pins
 
 
-def _acceleration_rhs(u: tuple, e: tuple, v: tuple, arm: tuple, w2, scratch) -> np.ndarray:
-    """``u·a_E + ω²·u·R·d − |v_P − v_E|²`` of one lead, in a fresh array."""
-    out = _dot(u, e[4], e[5], scratch)
-    along = _dot(u, arm[0], arm[1], scratch)
+def _acceleration_rhs(
+    u: tuple, e: tuple, v: tuple, arm: tuple, w2, scratch: np.ndarray, out: tuple
+) -> np.ndarray:
+    """``u·a_E + ω²·u·R·d − |v_P − v_E|²`` of one lead, in ``out[0]`` (``out[1]`` overwritten)."""
+    value = _dot(u, e[4], e[5], scratch, out[0])
+    along = _dot(u, arm[0], arm[1], scratch, out[1])
     along *= w2
-    out += along
+    value += along
     for k in (0, 1):
         gap = np.subtract(v[k], e[2 + k], out=along)
         gap *= gap
-        out -= gap
-    return out
+        value -= gap
+    return value
 
 
 def _in_some_order(triad: Triad, outer: list, distance: np.ndarray) -> tuple | None:
@@ -670,7 +687,7 @@ def frame_triad(
         return None  # (every pose the sketch: the sketch is the answer, which Newton keeps exactly)
     where = [_outer_position(frames, tables, pins, lead) for lead in triad.leads]
     found = _in_some_order(triad, where, distance)
-    del where
+    del where, distance
     if found is None:
         return None
     triad, _, (phi, c, s, p1x, p1y) = found

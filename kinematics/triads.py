@@ -690,7 +690,8 @@ def frame_triad(
     del where, distance
     if found is None:
         return None
-    triad, _, (phi, c, s, p1x, p1y) = found
+    triad, (phi, c, s, p1x, p1y) = found[0], found[2]
+    del found  # (and with it the outer pins' positions the solve used)
     outer = [_outer_pin(frames, tables, pins, lead, rates, inputs) for lead in triad.leads]
     rows = _base_rows(pins, triad, inputs, rates)
     rotated = tuple((c * dx - s * dy, s * dx + c * dy) for dx, dy in triad.arms)

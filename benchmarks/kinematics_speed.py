@@ -28,7 +28,10 @@ quantity); pylinkage is compared with ours too (reported, not a gate).
 
 The eight-bar with a class III triad (``fixtures/eightbar_triad.edges``, its
 triad solved by Newton) and the four-bar are timed in the same run over 10^4
-poses (``--triad-poses``), both through ``sweep()`` with every joint read out.
+poses (``--triad-poses``), both through ``sweep()`` with every joint read out,
+twice: interleaved, and back to back (each mechanism's sweeps in a block, so
+that each meets the memory its own last sweep left); the goal holds the worse
+of the two ratios.
 
 Goals: at N = 10^5, ours within 1.5x of the hand-written solver (with rates,
 and positions only), and at least 2x faster than pylinkage (with numba) for
@@ -410,16 +413,60 @@ def measure(case: Case, plan: SolvePlan, n: int, rounds: int, use_peer: bool) ->
     )  # fmt: skip
 
 
-def measure_triad(n: int, rounds: int) -> tuple[float, float, str]:
-    """Per-pose time of the eight-bar with a class III triad and of the four-bar, same run."""
+def back_to_back(fns: dict[str, Callable[[], object]], runs: int) -> dict[str, float]:
+    """The median time of each function over ``runs`` runs made one after another, in a block.
+
+    Unlike :func:`interleaved`, each function's runs follow each other, so each
+    one meets the memory its own previous run left (freed pages the allocator
+    kept, or gave back to the system and must fault in again): what a user
+    sweeping one mechanism over and over pays.
+    """
+    out = {}
+    for name, fn in fns.items():
+        times = []
+        for _ in range(runs):
+            t = time.perf_counter()
+            fn()
+            times.append(time.perf_counter() - t)
+        out[name] = float(np.median(times))
+    return out
+
+
+@dataclass
+class TriadTimes:
+    """Per-pose times of the eight-bar and the four-bar, interleaved and back to back (s)."""
+
+    eightbar: float
+    fourbar: float
+    eightbar_blocks: float
+    fourbar_blocks: float
+    labels: str
+
+    @property
+    def ratio(self) -> float:
+        """The worse of the two eight-bar/four-bar ratios (the one the goal is held to)."""
+        return max(self.eightbar / self.fourbar, self.eightbar_blocks / self.fourbar_blocks)
+
+
+def measure_triad(n: int, rounds: int) -> TriadTimes:
+    """Per-pose time of the eight-bar with a class III triad and of the four-bar, same run.
+
+    Timed twice: interleaved (one sweep of each per round) and back to back
+    (``rounds`` sweeps of the eight-bar, then as many of the four-bar, twice
+    over, the medians of each mechanism's sweeps).
+    """
     plans = {"eightbar": _plan("eightbar_triad"), "fourbar": _plan("fourbar")}
     inputs = np.linspace(0.0, 2 * math.pi, n, endpoint=False)[:, None]
     fns = {k: (lambda p=p: sweep_every_joint(p, inputs, True)) for k, p in plans.items()}
     for fn in fns.values():
         fn()
     t = interleaved(fns, rounds)
+    blocks = [back_to_back(fns, rounds) for _ in range(2)]
+    b = {k: float(np.median([x[k] for x in blocks])) for k in fns}
     labels = ", ".join(s.label for s in plans["eightbar"].steps)
-    return t["eightbar"] / n, t["fourbar"] / n, labels
+    return TriadTimes(
+        t["eightbar"] / n, t["fourbar"] / n, b["eightbar"] / n, b["fourbar"] / n, labels
+    )
 
 
 def profile_ours(plan: SolvePlan, n: int, top: int = 15) -> str:
@@ -489,7 +536,7 @@ def _print_row(row: Row, header_width: int) -> None:
     )
 
 
-def _verdicts(rows: list[Row], triad: tuple[float, float, str] | None) -> list[str]:
+def _verdicts(rows: list[Row], triad: TriadTimes | None) -> list[str]:
     out: list[str] = []
     for r in (r for r in rows if r.n >= 99_999):
         for what, ours, hand in (
@@ -512,9 +559,10 @@ def _verdicts(rows: list[Row], triad: tuple[float, float, str] | None) -> list[s
     if not any(r.n >= 99_999 for r in rows):
         out.append("hand and pylinkage goals not checked: run with N = 10^5")
     if triad is not None:
-        ratio = triad[0] / triad[1]
+        ratio = triad.ratio
         out.append(
-            f"eight-bar/four-bar per pose: {ratio:.2f}x (<= {GOAL_TRIAD:g}x) "
+            f"eight-bar/four-bar per pose, the worse of interleaved and back to back: "
+            f"{ratio:.2f}x (<= {GOAL_TRIAD:g}x) "
             f"{'met' if ratio <= GOAL_TRIAD else 'FAILED'}"
         )
     return out
@@ -560,9 +608,13 @@ def main(argv: list[str] | None = None) -> int:
         try:
             triad = measure_triad(n, args.rounds or 5)
             print(
-                f"\neight-bar with a class III triad ({triad[2]}), {n} poses: "
-                f"{triad[0] * 1e6:.2f} us per pose; four-bar in the same run "
-                f"{triad[1] * 1e6:.3f} us per pose (sweep(), every joint, medians)"
+                f"\neight-bar with a class III triad ({triad.labels}), {n} poses, sweep(), every "
+                f"joint, medians:\n  interleaved:   eight-bar {triad.eightbar * 1e6:.3f} us "
+                f"per pose, four-bar {triad.fourbar * 1e6:.3f}: "
+                f"{triad.eightbar / triad.fourbar:.2f}x\n  back to back:  eight-bar "
+                f"{triad.eightbar_blocks * 1e6:.3f} us per pose, four-bar "
+                f"{triad.fourbar_blocks * 1e6:.3f}: "
+                f"{triad.eightbar_blocks / triad.fourbar_blocks:.2f}x"
             )
         except Exception as exc:
             print(f"\neight-bar with a class III triad, {n} poses: FAILED: {exc}")

@@ -51,6 +51,7 @@ from functools import cached_property
 
 import numpy as np
 
+from .dyads import PinCache
 from .frames import GROUND_FRAME, Frame, frame_of_columns
 from .newton import CONTINUATION_STEP
 from .plan import GroupStep, SolvePlan
@@ -207,14 +208,19 @@ def angle_residual(triad: Triad, known: tuple, c, s, side: float) -> tuple:
     h2 = (l1 * l1) / ww - a * a
     h = side * abs(h2) ** 0.5
     u1x, u1y = a * wx - h * wy, a * wy + h * wx  # P₁ − E₁
+    del a  # (each value let go once used: over many poses, fewer arrays live at once)
     # dP₁/dφ = k·J·u₁ keeps |P₁E₁| and moves P₁ with C₂ (dC₂/dφ = −J·R·d₁₂):
     # k = (u₂·dC₂/dφ)/(u₁ × u₂) with u₂ = P₁ − C₂ = u₁ − w, and u₁ × u₂ = h·|w|²
     k = ((u1x - wx) * r2y - (u1y - wy) * r2x) / (h * ww)
+    del r2x, r2y, wx, wy, h
     dp1x, dp1y = -k * u1y, k * u1x
+    del k
     p1x, p1y = e1x + u1x, e1y + u1y
+    del u1x, u1y
     gx, gy = p1x + r3x - e3x, p1y + r3y - e3y
     f = gx * gx + gy * gy - l3 * l3
     df = 2.0 * (gx * (dp1x - r3y) + gy * (dp1y + r3x))
+    del gx, gy, r3x, r3y
     return f, df, p1x, p1y, dp1x, dp1y, h2 * ww / (l1 * l1)
 
 
@@ -372,6 +378,7 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
     phi, first = start, None
     c, s = np.cos(phi), np.sin(phi)
     for _ in range(_ITERATIONS):
+        f = df = p1x = p1y = dp1x = dp1y = gap = None  # the last pass's, let go before the next
         with np.errstate(divide="ignore", invalid="ignore"):
             f, df, p1x, p1y, dp1x, dp1y, gap = angle_residual(triad, known, c, s, triad.side)
             step = -f / df
@@ -398,7 +405,14 @@ def triad_angles(triad: Triad, known: tuple, distance: np.ndarray) -> tuple | No
 # ---------------------------------------------------------------- rates and frames
 
 
-def pin_rates(triad: Triad, rotated: tuple, offsets: tuple, outer: tuple, length: float) -> tuple:
+def pin_rates(
+    triad: Triad,
+    rotated: tuple,
+    offsets: tuple,
+    outer: tuple,
+    length: float,
+    out: tuple = (None, None, None),
+) -> tuple:
     """The base's ω, ε and its pins' velocities and accelerations, at every pose.
 
     ``rotated`` is ``(R·d₁₂, R·d₁₃)``, ``offsets`` the three uᵢ = Pᵢ − Eᵢ,
@@ -406,42 +420,152 @@ def pin_rates(triad: Triad, rotated: tuple, offsets: tuple, outer: tuple, length
     ``(v_P₁, ω)`` solve the rows ``uᵢ·(v_P₁ + ω·J·R·d₁ᵢ) = uᵢ·v_Eᵢ`` (each lead
     keeps its length); ``(a_P₁, ε)`` the same rows, right-hand sides
     ``uᵢ·a_Eᵢ + ω²·uᵢ·R·d₁ᵢ − |v_Pᵢ − v_Eᵢ|²``: Cramer's rule, the adjugate
-    shared. Returns ``(ω, ε, velocities, accelerations, measure)``, the pins'
-    rates as ``(x, y)`` pairs and ``measure`` = |det| over the product of the
-    rows' norms (θ column × 1/``length``): zero where the leads' lines meet in
-    one point, the triad's singular pose.
+    shared. P₂ and P₃ then move as points of the base with P₁ (the
+    arithmetic of the base's :class:`~kinematics.frames.Frame`). Each pin's
+    ``(vx, vy, ax, ay)`` is written into its entry of ``out`` (four arrays;
+    fresh ones where it is None). Returns ``(ω, ε, velocities,
+    accelerations, measure)``, the pins' rates as ``(x, y)`` pairs and
+    ``measure`` = |det| over the product of the rows' norms (θ column ×
+    1/``length``): zero where the leads' lines meet in one point, the triad's
+    singular pose. In-place operations on a few arrays: at 10^4 poses and
+    more, fresh temporaries cost more (in page faults) than the arithmetic.
     """
-    (r2x, r2y), (r3x, r3y) = rotated
     (u1x, u1y), (u2x, u2y), (u3x, u3y) = offsets
-    t2, t3 = r2x * u2y - r2y * u2x, r3x * u3y - r3y * u3x  # uᵢ·(J·R·d₁ᵢ)
-    adj = (
-        (u2y * t3 - t2 * u3y, -u1y * t3, u1y * t2),
-        (t2 * u3x - u2x * t3, u1x * t3, -u1x * t2),
-        (u2x * u3y - u2y * u3x, u1y * u3x - u1x * u3y, u1x * u2y - u1y * u2x),
+    scratch = np.empty(np.shape(u1x))
+    t2 = _difference(rotated[0][0], u2y, rotated[0][1], u2x, scratch)  # uᵢ·(J·R·d₁ᵢ)
+    t3 = _difference(rotated[1][0], u3y, rotated[1][1], u3x, scratch)
+    adj = _adjugate(offsets, t2, t3, scratch)
+    det = u1x * adj[0][0]
+    det += np.multiply(u1y, adj[1][0], out=scratch)
+    inverse = np.divide(1.0, det)
+    measure = _measure(triad, det, t2, t3, length, scratch)
+    del det, t2, t3
+    # every pin's four arrays (fresh where ``out`` has none), the accelerations' ones
+    # holding the right-hand sides until the accelerations are written
+    (v1x, v1y, a1x, a1y), (v2x, v2y, a2x, a2y), (v3x, v3y, a3x, a3y) = (
+        pin if pin is not None else tuple(np.empty(scratch.shape) for _ in range(4))
+        for pin in out
     )
-    det = u1x * adj[0][0] + u1y * adj[1][0]
-    inverse = 1.0 / det
-
-    def solved(rhs: tuple) -> tuple:
-        return tuple((row[0] * rhs[0] + row[1] * rhs[1] + row[2] * rhs[2]) * inverse for row in adj)
-
-    arms = ((0.0, 0.0), (r2x, r2y), (r3x, r3y))
-    pairs = tuple(zip(offsets, outer, strict=True))
-    vx, vy, omega = solved(tuple(u[0] * e[2] + u[1] * e[3] for u, e in pairs))
-    velocities = tuple((vx - omega * ry, vy + omega * rx) for rx, ry in arms)
+    rhs = [
+        _dot(u, e[2], e[3], scratch, spare)
+        for u, e, spare in zip(offsets, outer, (a1x, a1y, a2x), strict=True)
+    ]
+    _, _, omega = _solved(adj, rhs, inverse, scratch, (v1x, v1y))
+    velocities = _on_base(omega, rotated, ((v1x, v1y), (v2x, v2y), (v3x, v3y)), scratch)
     w2 = omega * omega
-    rhs = []
-    for u, e, v, (rx, ry) in zip(offsets, outer, velocities, arms, strict=True):
-        dvx, dvy = v[0] - e[2], v[1] - e[3]
-        rhs.append(u[0] * e[4] + u[1] * e[5] + w2 * (u[0] * rx + u[1] * ry) - dvx * dvx - dvy * dvy)
-    ax, ay, epsilon = solved(tuple(rhs))
-    accelerations = tuple(
-        (ax - epsilon * ry - w2 * rx, ay + epsilon * rx - w2 * ry) for rx, ry in arms
-    )
+    arms = ((0.0, 0.0), *rotated)
+    rhs = [
+        _acceleration_rhs(u, e, v, arm, w2, scratch, (spare, a3y))
+        for u, e, v, arm, spare in zip(offsets, outer, velocities, arms, (a2x, a2y, a3x),
+                                       strict=True)
+    ]  # fmt: skip
+    _, _, epsilon = _solved(adj, rhs, inverse, scratch, (a1x, a1y))
+    del adj, rhs, inverse
+    accelerations = _accelerated(epsilon, w2, rotated, ((a1x, a1y), (a2x, a2y), (a3x, a3y)),
+                                 scratch)  # fmt: skip
+    return omega, epsilon, velocities, accelerations, measure
+
+
+def _measure(triad: Triad, det, t2, t3, length: float, scratch: np.ndarray) -> np.ndarray:
+    """|det| over the product of the rows' norms; ``det``, ``t2`` and ``t3`` overwritten."""
     l1, l2, l3 = (lead.length for lead in triad.leads)
     k = 1.0 / (length * length)
-    norms = l1 * np.sqrt((l2 * l2 + k * t2 * t2) * (l3 * l3 + k * t3 * t3))
-    return omega, epsilon, velocities, accelerations, np.abs(det) / (length * norms)
+    for t, lead_length in ((t2, l2), (t3, l3)):  # lᵢ² + k·tᵢ², in place
+        np.multiply(k, t, out=scratch)
+        np.multiply(scratch, t, out=t)
+        t += lead_length * lead_length
+    norms = np.multiply(t2, t3, out=t2)
+    np.sqrt(norms, out=norms)
+    np.multiply(l1, norms, out=norms)
+    np.multiply(length, norms, out=norms)
+    measure = np.abs(det, out=det)
+    measure /= norms
+    return measure
+
+
+def _difference(a, b, c, d, scratch: np.ndarray) -> np.ndarray:
+    """``a·b − c·d`` in a fresh array, ``scratch`` overwritten."""
+    out = np.multiply(a, b)
+    out -= np.multiply(c, d, out=scratch)
+    return out
+
+
+def _adjugate(offsets: tuple, t2: np.ndarray, t3: np.ndarray, scratch: np.ndarray) -> tuple:
+    """The adjugate of the rows ``(uᵢx, uᵢy, tᵢ)`` (t₁ = 0), by rows of the inverse."""
+    (u1x, u1y), (u2x, u2y), (u3x, u3y) = offsets
+    minus_u1y_t3 = np.multiply(u1y, t3)
+    np.negative(minus_u1y_t3, out=minus_u1y_t3)  # (−u₁y)·t₃, as exact
+    minus_u1x_t2 = np.multiply(u1x, t2)
+    np.negative(minus_u1x_t2, out=minus_u1x_t2)
+    return (
+        (_difference(u2y, t3, t2, u3y, scratch), minus_u1y_t3, u1y * t2),
+        (_difference(t2, u3x, u2x, t3, scratch), u1x * t3, minus_u1x_t2),
+        (
+            _difference(u2x, u3y, u2y, u3x, scratch),
+            _difference(u1y, u3x, u1x, u3y, scratch),
+            _difference(u1x, u2y, u1y, u2x, scratch),
+        ),
+    )
+
+
+def _dot(u: tuple, x, y, scratch: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+    """``u·(x, y)``, in ``out`` (a fresh array if None)."""
+    out = np.multiply(u[0], x, out=out)
+    out += np.multiply(u[1], y, out=scratch)
+    return out
+
+
+def _solved(adj: tuple, rhs: list, inverse: np.ndarray, scratch: np.ndarray, out: tuple) -> list:
+    """The unknowns for the right-hand sides ``rhs``: the first two in ``out``, the third fresh."""
+    solution = []
+    for row, target in zip(adj, (*out, None), strict=True):
+        value = np.multiply(row[0], rhs[0], out=target)
+        value += np.multiply(row[1], rhs[1], out=scratch)
+        value += np.multiply(row[2], rhs[2], out=scratch)
+        value *= inverse
+        solution.append(value)
+    return solution
+
+
+def _on_base(omega, rotated: tuple, pins: tuple, scratch: np.ndarray) -> tuple:
+    """The pins' velocities, in ``pins``: P₁'s (solved, there) + ω·J·0, P₂'s and P₃'s from it."""
+    x, y = pins[0]
+    np.subtract(x, np.multiply(omega, 0.0, out=scratch), out=x)
+    np.add(y, np.multiply(omega, 0.0, out=scratch), out=y)
+    for (rx, ry), (px, py) in zip(rotated, pins[1:], strict=True):
+        np.subtract(x, np.multiply(omega, ry, out=scratch), out=px)
+        np.add(y, np.multiply(omega, rx, out=scratch), out=py)
+    return pins
+
+
+def _accelerated(epsilon, w2, rotated: tuple, pins: tuple, scratch: np.ndarray) -> tuple:
+    """The pins' accelerations, in ``pins``: P₁'s (solved, there), P₂'s and P₃'s from it."""
+    x, y = pins[0]
+    np.subtract(x, np.multiply(epsilon, 0.0, out=scratch), out=x)
+    x -= np.multiply(w2, 0.0, out=scratch)
+    np.add(y, np.multiply(epsilon, 0.0, out=scratch), out=y)
+    y -= np.multiply(w2, 0.0, out=scratch)
+    for (rx, ry), (px, py) in zip(rotated, pins[1:], strict=True):
+        np.subtract(x, np.multiply(w2, rx, out=scratch), out=px)
+        px -= np.multiply(epsilon, ry, out=scratch)
+        np.subtract(y, np.multiply(w2, ry, out=scratch), out=py)
+        py += np.multiply(epsilon, rx, out=scratch)
+    return pins
+
+
+def _acceleration_rhs(
+    u: tuple, e: tuple, v: tuple, arm: tuple, w2, scratch: np.ndarray, out: tuple
+) -> np.ndarray:
+    """``u·a_E + ω²·u·R·d − |v_P − v_E|²`` of one lead, in ``out[0]`` (``out[1]`` overwritten)."""
+    value = _dot(u, e[4], e[5], scratch, out[0])
+    along = _dot(u, arm[0], arm[1], scratch, out[1])
+    along *= w2
+    value += along
+    for k in (0, 1):
+        gap = np.subtract(v[k], e[2 + k], out=along)
+        gap *= gap
+        value -= gap
+    return value
 
 
 def _in_some_order(triad: Triad, outer: list, distance: np.ndarray) -> tuple | None:
@@ -477,21 +601,65 @@ def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
     return frame
 
 
-def _outer_pin(frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead, rates: bool):
+def _outer_position(frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead) -> tuple:
+    """``(x, y)`` of a lead's outer pin: the solve's, or from its known link's frame."""
+    found = pins.get((lead.known, float(lead.outer[0]), float(lead.outer[1])))
+    if found is not None:
+        return found[:2]
+    return _known_frame(frames, tables, lead.known).position(lead.outer)
+
+
+def _outer_pin(
+    frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead, rates: bool, inputs
+) -> tuple:
     """``(x, y, vx, vy, ax, ay)`` of a lead's outer pin, from its known link's frame, once.
 
     Kept in ``pins`` under ``(link, x, y)`` as the dyads keep theirs
-    (:class:`~kinematics.dyads.PinCache`); without ``rates`` only ``(x, y)``.
+    (:class:`~kinematics.dyads.PinCache`), written into its row of a sweep's
+    layout when it has one (under the known link or the lead); without
+    ``rates`` only ``(x, y)``. The positions are :func:`_outer_position`'s.
     """
-    key = (lead.known, float(lead.outer[0]), float(lead.outer[1]))
+    x, y = float(lead.outer[0]), float(lead.outer[1])
+    key = (lead.known, x, y)
     found = pins.get(key)
     if found is None:
         frame = _known_frame(frames, tables, lead.known)
-        if rates:
-            found = pins[key] = frame.point(lead.outer)
+        targets = None
+        if isinstance(pins, PinCache) and frame is not GROUND_FRAME:
+            targets = pins.targets((key, (lead.link, x, y)), inputs, rates)
+        if targets is not None:
+            frame.point_into(lead.outer, targets)
+            found = targets if rates else (*targets, None, None, None, None)
+        elif rates:
+            found = frame.point(lead.outer)
         else:
-            found = pins[key] = (*frame.position(lead.outer), None, None, None, None)
+            found = (*frame.position(lead.outer), None, None, None, None)
+        pins[key] = found
     return found if rates else found[:2]
+
+
+def _base_rows(pins: dict, triad: Triad, inputs: np.ndarray, rates: bool) -> tuple:
+    """Each base pin's row of a sweep's layout (under the base or its lead), or None."""
+    if not isinstance(pins, PinCache):
+        return (None, None, None)
+    keys = (
+        ((triad.base, float(x), float(y)), (lead.link, float(x), float(y)))
+        for lead in triad.leads
+        for x, y in (lead.inner,)
+    )
+    return tuple(pins.targets(pair, inputs, rates) for pair in keys)
+
+
+def _placed(p1: tuple, arm: tuple | None, row: tuple | None) -> tuple:
+    """A base pin's position: P₁ (``arm`` None) or P₁ + R·d₁ᵢ, written into ``row`` if given."""
+    if arm is None:
+        if row is None:
+            return p1
+        row[0][...] = p1[0]
+        row[1][...] = p1[1]
+        return row[0], row[1]
+    return (np.add(p1[0], arm[0], out=None if row is None else row[0]),
+            np.add(p1[1], arm[1], out=None if row is None else row[1]))  # fmt: skip
 
 
 def frame_triad(
@@ -517,24 +685,32 @@ def frame_triad(
     distance = path_length(plan, inputs) if triad is not None else None
     if triad is None or distance is None or distance[-1] == 0.0:
         return None  # (every pose the sketch: the sketch is the answer, which Newton keeps exactly)
-    outer = [_outer_pin(frames, tables, pins, lead, rates) for lead in triad.leads]
-    found = _in_some_order(triad, outer, distance)
+    where = [_outer_position(frames, tables, pins, lead) for lead in triad.leads]
+    found = _in_some_order(triad, where, distance)
+    del where, distance
     if found is None:
         return None
-    triad, outer, (phi, c, s, p1x, p1y) = found
+    triad, (phi, c, s, p1x, p1y) = found[0], found[2]
+    del found  # (and with it the outer pins' positions the solve used)
+    outer = [_outer_pin(frames, tables, pins, lead, rates, inputs) for lead in triad.leads]
+    rows = _base_rows(pins, triad, inputs, rates)
     rotated = tuple((c * dx - s * dy, s * dx + c * dy) for dx, dy in triad.arms)
-    pins = ((p1x, p1y), *((p1x + rx, p1y + ry) for rx, ry in rotated))
+    p1 = _placed((p1x, p1y), None, rows[0])
+    del p1x, p1y
+    pins = (p1, *(_placed(p1, arm, row) for arm, row in zip(rotated, rows[1:], strict=True)))
     suspect = np.zeros(len(inputs), dtype=bool)
     omega = epsilon = None
     velocities = accelerations = ((None, None),) * 3
     if rates:
         offsets = tuple((p[0] - e[0], p[1] - e[1]) for p, e in zip(pins, outer, strict=True))
+        targets = tuple(None if row is None else row[2:] for row in rows)
         omega, epsilon, velocities, accelerations, measure = pin_rates(
-            triad, rotated, offsets, tuple(outer), plan.length
+            triad, rotated, offsets, tuple(outer), plan.length, targets
         )
+        del offsets, rotated
         suspect = ~(measure > SUSPECT * (1.0 + _reach(triad) / plan.length) ** 2)
     frames[triad.base] = Frame(
-        triad.leads[0].inner, p1x, p1y, *velocities[0], *accelerations[0],
+        triad.leads[0].inner, *pins[0], *velocities[0], *accelerations[0],
         c, s, omega, epsilon, phi,
     )  # fmt: skip
     for lead, pin, e, v, a in zip(triad.leads, pins, outer, velocities, accelerations, strict=True):

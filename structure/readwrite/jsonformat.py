@@ -23,7 +23,7 @@ import math
 import sys
 from typing import Any
 
-from ..errors import EdgeListError, EdgeListProblem, StatementError
+from ..errors import EdgeListError, EdgeListProblem, NumberError, StatementError
 from ..expressions import read_number
 from ..kinds import LoadKind
 from ..model import (
@@ -121,10 +121,12 @@ def _is_number(value: Any) -> bool:
         return False
 
 
-def _numbers(values: list[Any]) -> tuple[list[float], list[str | None]]:
+def _numbers(values: list[Any]) -> tuple[list[float], list[str | None], str]:
     """Numbers, or exact expressions as strings (``"0.2*sqrt(3)"``), up to the first bad one.
 
-    Returns the float values and, for each, the text it was written as (None for a number).
+    Returns the float values, for each the text it was written as (None for a
+    number), and why the first bad one was refused when the expression reader
+    said why (too deep, too many digits, too large an exponent, ...), else "".
     """
     numbers: list[float] = []
     written: list[str | None] = []
@@ -135,13 +137,15 @@ def _numbers(values: list[Any]) -> tuple[list[float], list[str | None]]:
             continue
         try:
             number, _ = read_number(v) if isinstance(v, str) else (None, None)
+        except NumberError as exc:
+            return numbers, written, f": {exc.reason}"
         except ValueError:
             number = None
         if number is None:
             break
         numbers.append(number)
         written.append(v)
-    return numbers, written
+    return numbers, written, ""
 
 
 def _text(value: Any) -> str:
@@ -377,10 +381,11 @@ def _read_point(name: str, value: Any, where: str, problems: _Problems) -> Point
     if not isinstance(value, list) or len(value) != 2:
         problems.add(where, "must be [x, y] with finite numbers")
         return None
-    coords, exact = _numbers(value)
+    coords, exact, why = _numbers(value)
     if len(coords) != 2:
         problems.add(
-            where, "must be [x, y] with finite numbers or exact expressions like '0.2*sqrt(3)'"
+            where,
+            "must be [x, y] with finite numbers or exact expressions like '0.2*sqrt(3)'" + why,
         )
         return None
     try:
@@ -416,14 +421,16 @@ def _read_load(item: Any, where: str, problems: _Problems) -> Load | None:
     values = item.get("values", [])
     link = item.get("link", "")
     point = item.get("point")
-    numbers, written = _numbers(values if isinstance(values, list) else [None])
+    numbers, written, why = _numbers(values if isinstance(values, list) else [None])
     if (
         not isinstance(values, list)
         or len(numbers) != len(values)
         or (kind.takes_link and not _is_name(link))
         or (kind.takes_point and not _is_name(point))
     ):
-        problems.add(where, "needs 'link', 'point' (force, mass, balance) and finite 'values'")
+        problems.add(
+            where, "needs 'link', 'point' (force, mass, balance) and finite 'values'" + why
+        )
         return None
     try:
         return make_load(

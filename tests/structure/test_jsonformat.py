@@ -429,3 +429,22 @@ def test_good_loads_read_as_in_the_edge_list():
     ]
     parsed = parse_edgelist([*lines, *statements], "t")
     assert mechanism_from_dict(_fourbar(loads=loads), "t") == parsed
+
+
+#: each limit of the exact-expression reader and the words of its reason (as in test_edgelist)
+LIMIT_TEXTS = [
+    pytest.param("(" * 101 + "1" + ")" * 101, "deeper than 100", id="depth"),
+    pytest.param("1/" + "1" * 101, "more than 100 digits", id="digits"),
+    pytest.param("1e99999999", "exponent beyond ±400", id="exponent"),
+    pytest.param("1+" * 500 + "1", "longer than 1000 characters", id="length"),
+]
+
+
+@pytest.mark.parametrize(("text", "reason"), LIMIT_TEXTS)
+def test_a_json_expression_beyond_a_limit_names_the_limit(text, reason):
+    """Like the edge-list reader, the JSON reader says which limit an expression passes."""
+    point = _error(_fourbar(points={"A": [text, 0]}))
+    load = _error(_fourbar(loads=[{"kind": "moment", "link": "2", "values": [text]}]))
+    for error in (point, load):
+        assert len(error.problems) == 1 and reason in error.reason
+        assert len(str(error)) < 1000

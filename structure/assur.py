@@ -58,9 +58,12 @@ __all__ = [
     "Decomposition",
     "DyadKind",
     "GroupPair",
+    "GroupPlan",
+    "build_decomposition",
     "classify_group",
     "decompose",
     "driver_candidates",
+    "plan_groups",
     "roman",
 ]
 
@@ -274,6 +277,9 @@ def decompose(
     mechanism driven by the same drivers, when already computed
     (:func:`~structure.mobility.mobility_analysis`).
 
+    The same as :func:`build_decomposition` of :func:`plan_groups`: a caller
+    holding large analyses can let them go between the two.
+
     Raises
     ------
     DecompositionError
@@ -281,6 +287,39 @@ def decompose(
         determine.
     MobilityError
         A driver whose motion the other pairs already fix.
+    """
+    return build_decomposition(plan_groups(mechanism, drivers, analyses=analyses))
+
+
+@dataclass(frozen=True, slots=True)
+class GroupPlan:
+    """Which links form each Assur group, before the groups are built.
+
+    ``members`` holds each group's links (keyed by its merged block),
+    ``order`` the blocks in solve order, ``edges`` the dependencies between
+    blocks; ``mechanism`` is what remains once the redundant links and pairs
+    (``removed_links``, ``removed_pairs``) are set aside. Small: the rank
+    analyses it comes from are no longer needed.
+    """
+
+    mechanism: Mechanism
+    drivers: tuple[str, ...]
+    members: Mapping[int, list[str]]
+    order: Sequence[int]
+    edges: set[tuple[int, int]]
+    removed_links: tuple[str, ...]
+    removed_pairs: tuple[int, ...]
+
+
+def plan_groups(
+    mechanism: Mechanism,
+    drivers: Sequence[str] | None = None,
+    *,
+    analyses: tuple[RankAnalysis, RankAnalysis | None] | None = None,
+) -> GroupPlan:
+    """The first half of :func:`decompose`: which links form each group, in which order.
+
+    Raises as :func:`decompose` does.
     """
     drivers = tuple(mechanism.driver_links if drivers is None else drivers)
     if any(p.kind is PairKind.H for p in mechanism.pairs):
@@ -314,16 +353,29 @@ def decompose(
         raise DecompositionError(
             "the drivers do not determine link(s) " + ", ".join(loose or ["?"]), loose
         )
-    return _groups_from_blocks(current, drivers, structural, removed_links, removed_pairs)
+    return _plan_from_blocks(current, drivers, structural, removed_links, removed_pairs)
 
 
-def _groups_from_blocks(
+def build_decomposition(plan: GroupPlan) -> Decomposition:
+    """The second half of :func:`decompose`: the groups of ``plan`` and their DAG."""
+    return _decomposition(
+        plan.mechanism,
+        plan.drivers,
+        plan.members,
+        plan.order,
+        plan.edges,
+        plan.removed_links,
+        plan.removed_pairs,
+    )
+
+
+def _plan_from_blocks(
     mechanism: Mechanism,
-    drivers: Sequence[str],
+    drivers: tuple[str, ...],
     analysis: RankAnalysis,
     removed_links: Sequence[str],
     removed_pairs: Sequence[int],
-) -> Decomposition:
+) -> GroupPlan:
     """Assur groups from the irreducible blocks of the driven system.
 
     A link belongs to the block that completes it. Blocks can be finer than
@@ -348,7 +400,7 @@ def _groups_from_blocks(
     order = _topological_order(
         nodes, edges, {b: min(position[x] for x in members[b]) for b in nodes}
     )
-    return _decomposition(
+    return GroupPlan(
         mechanism, drivers, members, order, edges, tuple(removed_links), tuple(removed_pairs)
     )
 
@@ -405,17 +457,28 @@ def _merge_split_pairs(
     owner: Sequence[int | None],
     merged: UnionFind,
 ) -> None:
-    """Merge the blocks whose unknowns rows of one pair fix: a pair is never split."""
-    by_pair: dict[int, set[int]] = {}
+    """Merge the blocks whose unknowns rows of one pair fix: a pair is never split.
+
+    Most pairs lie in one block: only the first block of each pair is kept,
+    and a set of its blocks is made for the few pairs that lie in several.
+    """
+    first: dict[int, int] = {}
+    several: dict[int, set[int]] = {}
+    row_kind, row_pair = system.row_kind, system.row_pair
     for r, units in enumerate(assigned[: system.n_pair_rows]):
-        if system.row_kind[r] is _PIN:
+        if row_kind[r] is _PIN:
             continue
         for u in units:
             b = owner[u]
-            if b is not None:
-                by_pair.setdefault(system.row_pair[r], set()).add(b)
-    for blocks in by_pair.values():
-        if len(blocks) > 1:
+            if b is None:
+                continue
+            pid = row_pair[r]
+            known = first.setdefault(pid, b)
+            if known != b:
+                several.setdefault(pid, {known}).add(b)
+    for pid in first:
+        blocks = several.get(pid)
+        if blocks is not None:
             merged.union(*blocks)
 
 

@@ -20,7 +20,9 @@ algorithms", SIAM J. Comput. 1 (1972).
 
 from __future__ import annotations
 
+from array import array
 from collections.abc import Sequence
+from itertools import repeat
 
 import numpy as np
 
@@ -184,8 +186,8 @@ def irreducible_blocks(
     [[0], [1, 2]]
     """
     if as_successors:
-        sources = [v for v, succ in enumerate(adj) for _ in succ]
-        targets = [w for succ in adj for w in succ]
+        sources = array("q", [v for v, succ in enumerate(adj) for _ in succ])
+        targets = array("q", [w for succ in adj for w in succ])
     else:
         sources, targets = _dependency_edges(adj, assigned)
     start, flat = _adjacency_arrays(sources, targets, n_unknowns)
@@ -195,13 +197,14 @@ def irreducible_blocks(
 
 def _dependency_edges(
     adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]]
-) -> tuple[list[int], list[int]]:
+) -> tuple[array, array]:
     """``w -> u`` when a row matched to ``u`` also touches ``w``: sources and targets, in order.
 
     Self-loops (``w == u``) are listed too; :func:`_adjacency_arrays` drops them.
+    Flat arrays of machine integers: a large mechanism has about a million edges.
     """
-    sources: list[int] = []
-    targets: list[int] = []
+    sources = array("q")
+    targets = array("q")
     for r, units in enumerate(assigned):
         if not units:
             continue
@@ -209,33 +212,37 @@ def _dependency_edges(
         first = units[0]
         if len(units) == 1 or all(u == first for u in units):
             sources.extend(a)
-            targets.extend([first] * len(a))
+            targets.extend(repeat(first, len(a)))
             continue
         for u in set(units):
             sources.extend(a)
-            targets.extend([u] * len(a))
+            targets.extend(repeat(u, len(a)))
     return sources, targets
 
 
-def _adjacency_arrays(
-    sources: list[int], targets: list[int], n_nodes: int
-) -> tuple[list[int], list[int]]:
-    """Successor lists as one flat list: ``flat[start[v]:start[v + 1]]`` are ``v``'s, in order.
+def _adjacency_arrays(sources: array, targets: array, n_nodes: int) -> tuple[array, array]:
+    """Successor lists as one flat array: ``flat[start[v]:start[v + 1]]`` are ``v``'s, in order.
 
-    Two lists instead of one list per node: a large mechanism's digraph has
-    hundreds of thousands of nodes. Self-loops are dropped.
+    Two flat arrays of machine integers instead of one list per node: a large
+    mechanism's digraph has hundreds of thousands of nodes. Self-loops are dropped.
     """
-    src = np.asarray(sources, dtype=np.int64)
-    dst = np.asarray(targets, dtype=np.int64)
+    src = np.frombuffer(sources, dtype=np.int64) if len(sources) else np.zeros(0, np.int64)
+    dst = np.frombuffer(targets, dtype=np.int64) if len(targets) else np.zeros(0, np.int64)
     keep = src != dst
     src, dst = src[keep], dst[keep]
     order = np.argsort(src, kind="stable")
     start = np.zeros(n_nodes + 1, dtype=np.int64)
     np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
-    return start.tolist(), dst[order].tolist()
+    return _as_array(start), _as_array(dst[order])
 
 
-def _strongly_connected(start: list[int], flat: list[int], n_nodes: int) -> list[list[int]]:
+def _as_array(values: np.ndarray) -> array:
+    out = array("q")
+    out.frombytes(values.astype(np.int64, copy=False).tobytes())
+    return out
+
+
+def _strongly_connected(start: array, flat: array, n_nodes: int) -> list[list[int]]:
     """Strongly connected components, sources first (Tarjan, iterative); each one sorted.
 
     The successors of ``v`` are ``flat[start[v]:start[v + 1]]``. A node whose
@@ -243,8 +250,8 @@ def _strongly_connected(start: list[int], flat: list[int], n_nodes: int) -> list
     lowers a link value again (no separate on-stack flags).
     """
     done = n_nodes + 1
-    index = [-1] * n_nodes
-    low = [0] * n_nodes
+    index = array("q", [-1]) * n_nodes
+    low = array("q", [0]) * n_nodes
     ptr = start[:-1]
     stack: list[int] = []
     comps: list[list[int]] = []

@@ -73,8 +73,9 @@ class RankAnalysis:
     blocks : list of list of int or None
         Irreducible blocks of the driven system in solve order, when it is
         square and regular (the usual case); ``None`` otherwise.
-    assigned : list of list of int
-        The matching behind ``blocks``.
+    assigned : list of tuple of int
+        The matching behind ``blocks``: the unknown blocks each row is matched
+        to (one entry per unit; tuples, which cost half a list's memory).
     method : str
         ``'structural'`` (matching + block determinants) or ``'dense'``.
     """
@@ -85,7 +86,7 @@ class RankAnalysis:
     dof: int
     free: list[tuple[int, int]]
     blocks: list[list[int]] | None
-    assigned: list[list[int]] = field(repr=False)
+    assigned: Sequence[Sequence[int]] = field(repr=False)
     method: str
 
     @property
@@ -122,7 +123,7 @@ def _probe_system(system: ConstraintSystem, free: list[tuple[int, int]]) -> Cons
 def _singular_blocks(
     system: ConstraintSystem,
     blocks: list[list[int]],
-    assigned: list[list[int]],
+    assigned: Sequence[Sequence[int]],
     seed: int,
     which: Sequence[int] | None = None,
 ) -> list[int]:
@@ -210,7 +211,7 @@ def _singular_ratios(matrices: Sequence[list[list[float]]]) -> np.ndarray:
 
 
 def _rows_of_blocks(
-    system: ConstraintSystem, blocks: list[list[int]], assigned: list[list[int]]
+    system: ConstraintSystem, blocks: list[list[int]], assigned: Sequence[Sequence[int]]
 ) -> list[list[int]]:
     """The rows matched into each block."""
     block_of = [0] * len(system.unknowns)
@@ -225,7 +226,7 @@ def _rows_of_blocks(
 
 
 def _block_pattern(
-    system: ConstraintSystem, units: list[int], rows: list[int], assigned: list[list[int]]
+    system: ConstraintSystem, units: list[int], rows: list[int], assigned: Sequence[Sequence[int]]
 ) -> tuple:
     """What a block's regularity depends on: sizes, row kinds, local incidences, shared points."""
     local = {u: i for i, u in enumerate(units)}
@@ -255,7 +256,7 @@ def _block_matrix(
     realization: Realization,
     units: list[int],
     rows: list[int],
-    assigned: list[list[int]],
+    assigned: Sequence[Sequence[int]],
     uo: list[int],
 ) -> list[list[float]] | None:
     """The block's square Jacobian at ``realization``, or None when its rows do not fill it."""
@@ -296,18 +297,19 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     """
     matcher, unmatched = _match(system)
     free = matcher.free_units
+    rank = sum(len(a) for a in matcher.assigned[: system.n_pair_rows])
+    # the matching's tuples are kept as they are; the rest of the matcher goes now,
+    # before the blocks need memory (a large mechanism's matcher is tens of MB)
+    assigned: list[tuple[int, ...]] = matcher.assigned
+    del matcher
     probed = _probe_system(system, free)
-    assigned = [list(a) for a in matcher.assigned]
-    for u, k in free:
-        assigned.append([u] * k)
+    assigned.extend((u,) * k for u, k in free)
     blocks = irreducible_blocks(probed.row_adj, assigned, len(system.unknowns))
     suspects = _singular_blocks(probed, blocks, assigned, seed)
     if suspects:
         # a generic dependency persists at another random pose; a near-coincidence does not
         suspects = _singular_blocks(probed, blocks, assigned, seed + 1, suspects)
     if not suspects:
-        n_pairs = system.n_pair_rows
-        rank = sum(len(a) for a in matcher.assigned[:n_pairs])
         return RankAnalysis(
             system,
             unmatched,

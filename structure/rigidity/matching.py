@@ -186,25 +186,27 @@ def irreducible_blocks(
     [[0], [1, 2]]
     """
     if as_successors:
-        sources = array("q", [v for v, succ in enumerate(adj) for _ in succ])
-        targets = array("q", [w for succ in adj for w in succ])
+        src = np.fromiter((v for v, succ in enumerate(adj) for _ in succ), dtype=np.intc)
+        dst = np.fromiter((w for succ in adj for w in succ), dtype=np.intc)
+        keep = src != dst
+        src, dst = src[keep], dst[keep]
     else:
-        sources, targets = _dependency_edges(adj, assigned)
-    start, flat = _adjacency_arrays(sources, targets, n_unknowns)
-    del sources, targets
+        src, dst = _dependency_edges(adj, assigned)
+    start, flat = _adjacency_arrays(src, dst, n_unknowns)
+    del src, dst
     return _strongly_connected(start, flat, n_unknowns)
 
 
 def _dependency_edges(
     adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]]
-) -> tuple[array, array]:
+) -> tuple[np.ndarray, np.ndarray]:
     """``w -> u`` when a row matched to ``u`` also touches ``w``: sources and targets, in order.
 
-    Self-loops (``w == u``) are listed too; :func:`_adjacency_arrays` drops them.
-    Flat arrays of machine integers: a large mechanism has about a million edges.
+    Self-loops (``w == u``) are left out. Gathered in flat arrays of machine
+    integers: a large mechanism has about a million edges.
     """
-    sources = array("q")
-    targets = array("q")
+    sources = array("i")
+    targets = array("i")
     for r, units in enumerate(assigned):
         if not units:
             continue
@@ -217,28 +219,29 @@ def _dependency_edges(
         for u in set(units):
             sources.extend(a)
             targets.extend(repeat(u, len(a)))
-    return sources, targets
+    if not sources:
+        return np.zeros(0, np.intc), np.zeros(0, np.intc)
+    src = np.frombuffer(sources, dtype=np.intc)
+    dst = np.frombuffer(targets, dtype=np.intc)
+    keep = src != dst
+    return src[keep], dst[keep]  # copies: the gathered arrays go on return
 
 
-def _adjacency_arrays(sources: array, targets: array, n_nodes: int) -> tuple[array, array]:
+def _adjacency_arrays(src: np.ndarray, dst: np.ndarray, n_nodes: int) -> tuple[array, array]:
     """Successor lists as one flat array: ``flat[start[v]:start[v + 1]]`` are ``v``'s, in order.
 
     Two flat arrays of machine integers instead of one list per node: a large
-    mechanism's digraph has hundreds of thousands of nodes. Self-loops are dropped.
+    mechanism's digraph has hundreds of thousands of nodes.
     """
-    src = np.frombuffer(sources, dtype=np.int64) if len(sources) else np.zeros(0, np.int64)
-    dst = np.frombuffer(targets, dtype=np.int64) if len(targets) else np.zeros(0, np.int64)
-    keep = src != dst
-    src, dst = src[keep], dst[keep]
-    order = np.argsort(src, kind="stable")
     start = np.zeros(n_nodes + 1, dtype=np.int64)
     np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
-    return _as_array(start), _as_array(dst[order])
+    flat = dst[np.argsort(src, kind="stable")]
+    return _as_array(start), _as_array(flat)
 
 
 def _as_array(values: np.ndarray) -> array:
-    out = array("q")
-    out.frombytes(values.astype(np.int64, copy=False).tobytes())
+    out = array("i")
+    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=np.intc)).cast("B"))
     return out
 
 
@@ -250,8 +253,8 @@ def _strongly_connected(start: array, flat: array, n_nodes: int) -> list[list[in
     lowers a link value again (no separate on-stack flags).
     """
     done = n_nodes + 1
-    index = array("q", [-1]) * n_nodes
-    low = array("q", [0]) * n_nodes
+    index = array("i", [-1]) * n_nodes
+    low = array("i", [0]) * n_nodes
     ptr = start[:-1]
     stack: list[int] = []
     comps: list[list[int]] = []

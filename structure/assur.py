@@ -35,6 +35,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from .errors import DecompositionError, MobilityError
 from .kinds import DyadKind, PairKind
 from .model import Hinge, Mechanism
@@ -45,7 +47,7 @@ from .rigidity.constraints import (
     constraint_system,
     sketch_realization,
 )
-from .rigidity.matching import irreducible_blocks
+from .rigidity.matching import strongly_connected
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
 from .utils import UnionFind
 from .validation import validated
@@ -392,14 +394,20 @@ def _plan_from_blocks(
     owner = _block_owners(system, analysis.assigned, start, merged)
     _merge_split_pairs(system, analysis.assigned, owner, merged)
     nodes, edges, root = _merge_cycles(system, analysis.assigned, owner, merged)
+    del owner, merged
     members: dict[int, list[str]] = {}
-    for link in mechanism.moving_links:
+    first_position: dict[int, int] = {}  # of each block's first link, the order's key
+    for i, link in enumerate(mechanism.links):  # the ground (first) is never in start
         if link in start:
-            members.setdefault(root[start[link]], []).append(link)
-    position = {link: i for i, link in enumerate(mechanism.links)}
-    order = _topological_order(
-        nodes, edges, {b: min(position[x] for x in members[b]) for b in nodes}
-    )
+            b = root[start[link]]
+            found = members.get(b)
+            if found is None:
+                members[b] = [link]
+                first_position[b] = i
+            else:
+                found.append(link)
+    del root, start
+    order = _topological_order(nodes, edges, first_position)
     return GroupPlan(
         mechanism, drivers, members, order, edges, tuple(removed_links), tuple(removed_pairs)
     )
@@ -498,15 +506,17 @@ def _merge_cycles(
         merged_owner = [None if b is None else root[b] for b in owner]
         edges = _block_dependencies(system, assigned, merged_owner)
         nodes = sorted(set(root.values()))
-        number = {b: i for i, b in enumerate(nodes)}
-        successors: list[list[int]] = [[] for _ in nodes]
-        for u, v in edges:
-            successors[number[u]].append(number[v])
-        # strongly connected components of the group graph: cycles merge
-        components = irreducible_blocks(
-            successors, [[i] for i in range(len(nodes))], len(nodes), as_successors=True
-        )
+        # strongly connected components of the group graph (nodes numbered in order,
+        # edges as flat arrays): cycles merge
+        numbered = np.array(nodes, dtype=np.int64)
+        count = len(edges)
+        sources = np.searchsorted(numbered, np.fromiter((u for u, _ in edges), np.int64, count))
+        targets = np.searchsorted(numbered, np.fromiter((v for _, v in edges), np.int64, count))
+        del numbered
+        components = strongly_connected(sources, targets, len(nodes))
+        del sources, targets
         cycles = [c for c in components if len(c) > 1]
+        del components
         if not cycles:
             return nodes, edges, root
         for c in cycles:

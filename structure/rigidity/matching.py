@@ -26,7 +26,7 @@ from itertools import repeat
 
 import numpy as np
 
-__all__ = ["Matcher", "irreducible_blocks"]
+__all__ = ["Matcher", "irreducible_blocks", "strongly_connected"]
 
 
 class Matcher:
@@ -188,13 +188,29 @@ def irreducible_blocks(
     if as_successors:
         src = np.fromiter((v for v, succ in enumerate(adj) for _ in succ), dtype=np.intc)
         dst = np.fromiter((w for succ in adj for w in succ), dtype=np.intc)
-        keep = src != dst
-        src, dst = src[keep], dst[keep]
-    else:
-        src, dst = _dependency_edges(adj, assigned)
+        return strongly_connected(src, dst, n_unknowns)
+    src, dst = _dependency_edges(adj, assigned)
     start, flat = _adjacency_arrays(src, dst, n_unknowns)
     del src, dst
     return _strongly_connected(start, flat, n_unknowns)
+
+
+def strongly_connected(sources: np.ndarray, targets: np.ndarray, n_nodes: int) -> list[list[int]]:
+    """Strongly connected components of the digraph with edges ``sources[k] -> targets[k]``.
+
+    Sources first, each component sorted, in a deterministic order: the
+    successors of a node are taken in the order of its edges. The same as
+    :func:`irreducible_blocks` with ``as_successors=True``, without a list
+    of successors per node.
+
+    >>> strongly_connected(np.array([0, 1, 2]), np.array([1, 2, 1]), 3)
+    [[0], [1, 2]]
+    """
+    src = np.asarray(sources, dtype=np.intc)
+    dst = np.asarray(targets, dtype=np.intc)
+    keep = src != dst
+    start, flat = _adjacency_arrays(src[keep], dst[keep], n_nodes)
+    return _strongly_connected(start, flat, n_nodes)
 
 
 def _dependency_edges(

@@ -508,11 +508,7 @@ def _merge_cycles(
         nodes = sorted(set(root.values()))
         # strongly connected components of the group graph (nodes numbered in order,
         # edges as flat arrays): cycles merge
-        numbered = np.array(nodes, dtype=np.int64)
-        count = len(edges)
-        sources = np.searchsorted(numbered, np.fromiter((u for u, _ in edges), np.int64, count))
-        targets = np.searchsorted(numbered, np.fromiter((v for _, v in edges), np.int64, count))
-        del numbered
+        sources, targets = _numbered_edges(nodes, edges)
         components = strongly_connected(sources, targets, len(nodes))
         del sources, targets
         cycles = [c for c in components if len(c) > 1]
@@ -521,6 +517,25 @@ def _merge_cycles(
             return nodes, edges, root
         for c in cycles:
             merged.union(*(nodes[i] for i in c))
+
+
+def _numbered_edges(
+    nodes: list[int], edges: set[tuple[int, int]]
+) -> tuple[Sequence[int], Sequence[int]]:
+    """The ``edges`` between sorted ``nodes`` as two sequences of node numbers, in set order.
+
+    A large mechanism's are numbered by numpy (a dict of its hundreds of
+    thousands of nodes would cost more memory than the edges themselves).
+    """
+    if len(nodes) < 2048:
+        number = {b: i for i, b in enumerate(nodes)}
+        return [number[u] for u, _ in edges], [number[v] for _, v in edges]
+    numbered = np.array(nodes, dtype=np.int64)
+    count = len(edges)
+    return (
+        np.searchsorted(numbered, np.fromiter((u for u, _ in edges), np.int64, count)),
+        np.searchsorted(numbered, np.fromiter((v for _, v in edges), np.int64, count)),
+    )
 
 
 def _block_dependencies(

@@ -186,16 +186,16 @@ def irreducible_blocks(
     [[0], [1, 2]]
     """
     if as_successors:
-        src = np.fromiter((v for v, succ in enumerate(adj) for _ in succ), dtype=np.intc)
-        dst = np.fromiter((w for succ in adj for w in succ), dtype=np.intc)
-        return strongly_connected(src, dst, n_unknowns)
-    src, dst = _dependency_edges(adj, assigned)
-    start, flat = _adjacency_arrays(src, dst, n_unknowns)
-    del src, dst
+        sources = array("i", [v for v, succ in enumerate(adj) for _ in succ])
+        targets = array("i", [w for succ in adj for w in succ])
+        return strongly_connected(sources, targets, n_unknowns)
+    start, flat = _adjacency_arrays(*_dependency_edges(adj, assigned), n_unknowns)
     return _strongly_connected(start, flat, n_unknowns)
 
 
-def strongly_connected(sources: np.ndarray, targets: np.ndarray, n_nodes: int) -> list[list[int]]:
+def strongly_connected(
+    sources: Sequence[int], targets: Sequence[int], n_nodes: int
+) -> list[list[int]]:
     """Strongly connected components of the digraph with edges ``sources[k] -> targets[k]``.
 
     Sources first, each component sorted, in a deterministic order: the
@@ -203,23 +203,20 @@ def strongly_connected(sources: np.ndarray, targets: np.ndarray, n_nodes: int) -
     :func:`irreducible_blocks` with ``as_successors=True``, without a list
     of successors per node.
 
-    >>> strongly_connected(np.array([0, 1, 2]), np.array([1, 2, 1]), 3)
+    >>> strongly_connected([0, 1, 2], [1, 2, 1], 3)
     [[0], [1, 2]]
     """
-    src = np.asarray(sources, dtype=np.intc)
-    dst = np.asarray(targets, dtype=np.intc)
-    keep = src != dst
-    start, flat = _adjacency_arrays(src[keep], dst[keep], n_nodes)
+    start, flat = _adjacency_arrays(sources, targets, n_nodes)
     return _strongly_connected(start, flat, n_nodes)
 
 
 def _dependency_edges(
     adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]]
-) -> tuple[np.ndarray, np.ndarray]:
+) -> tuple[array, array]:
     """``w -> u`` when a row matched to ``u`` also touches ``w``: sources and targets, in order.
 
-    Self-loops (``w == u``) are left out. Gathered in flat arrays of machine
-    integers: a large mechanism has about a million edges.
+    Self-loops (``w == u``) are listed too; :func:`_adjacency_arrays` drops them.
+    Flat arrays of machine integers: a large mechanism has about a million edges.
     """
     sources = array("i")
     targets = array("i")
@@ -235,24 +232,43 @@ def _dependency_edges(
         for u in set(units):
             sources.extend(a)
             targets.extend(repeat(u, len(a)))
-    if not sources:
-        return np.zeros(0, np.intc), np.zeros(0, np.intc)
-    src = np.frombuffer(sources, dtype=np.intc)
-    dst = np.frombuffer(targets, dtype=np.intc)
-    keep = src != dst
-    return src[keep], dst[keep]  # copies: the gathered arrays go on return
+    return sources, targets
 
 
-def _adjacency_arrays(src: np.ndarray, dst: np.ndarray, n_nodes: int) -> tuple[array, array]:
+#: from this many edges on, the successor arrays are sorted by numpy (below, by a
+#: counting sort in Python, which costs less for the small mechanisms of a batch)
+_NUMPY_EDGES = 2048
+
+
+def _adjacency_arrays(
+    sources: Sequence[int], targets: Sequence[int], n_nodes: int
+) -> tuple[array, array]:
     """Successor lists as one flat array: ``flat[start[v]:start[v + 1]]`` are ``v``'s, in order.
 
     Two flat arrays of machine integers instead of one list per node: a large
-    mechanism's digraph has hundreds of thousands of nodes.
+    mechanism's digraph has hundreds of thousands of nodes. Self-loops are dropped.
     """
-    start = np.zeros(n_nodes + 1, dtype=np.int64)
-    np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
-    flat = dst[np.argsort(src, kind="stable")]
-    return _as_array(start), _as_array(flat)
+    if len(sources) >= _NUMPY_EDGES:
+        src = np.asarray(sources, dtype=np.intc)
+        dst = np.asarray(targets, dtype=np.intc)
+        keep = src != dst
+        src, dst = src[keep], dst[keep]
+        del keep
+        start = np.zeros(n_nodes + 1, dtype=np.int64)
+        np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
+        return _as_array(start), _as_array(dst[np.argsort(src, kind="stable")])
+    pairs = [(v, w) for v, w in zip(sources, targets, strict=True) if v != w]
+    counts = array("i", [0]) * (n_nodes + 1)
+    for v, _ in pairs:
+        counts[v + 1] += 1
+    for v in range(n_nodes):
+        counts[v + 1] += counts[v]
+    fill = counts[:-1]
+    flat = array("i", [0]) * len(pairs)
+    for v, w in pairs:
+        flat[fill[v]] = w
+        fill[v] += 1
+    return counts, flat
 
 
 def _as_array(values: np.ndarray) -> array:

@@ -258,18 +258,23 @@ def _rows_of_blocks(
     for b, units in enumerate(blocks):
         for u in units:
             block_of[u] = b
+    # a counting sort of the matched rows by block, stable in row order
+    start = array("i", [0]) * (len(blocks) + 1)
     row_block = array("i", [-1]) * len(assigned)
     for r, units in enumerate(assigned):
         if units:
-            row_block[r] = block_of[units[0]]
+            b = row_block[r] = block_of[units[0]]
+            start[b + 1] += 1
     del block_of
-    of_row = np.frombuffer(row_block, dtype=np.intc) if len(row_block) else np.zeros(0, np.intc)
-    matched = np.flatnonzero(of_row >= 0)
-    flat = _int_array(matched[np.argsort(of_row[matched], kind="stable")])
-    start = _int_array(
-        np.concatenate(([0], np.cumsum(np.bincount(of_row[matched], minlength=len(blocks)))))
-    )
-    del of_row, row_block
+    for b in range(len(blocks)):
+        start[b + 1] += start[b]
+    fill = start[:-1]
+    flat = array("i", [0]) * start[-1]
+    for r, b in enumerate(row_block):
+        if b >= 0:
+            flat[fill[b]] = r
+            fill[b] += 1
+    del fill, row_block
 
     def rows_of(b: int) -> Sequence[int]:
         return flat[start[b] : start[b + 1]]

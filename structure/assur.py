@@ -35,6 +35,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from .errors import DecompositionError, MobilityError
 from .kinds import DyadKind, PairKind
 from .model import Hinge, Mechanism
@@ -45,7 +47,7 @@ from .rigidity.constraints import (
     constraint_system,
     sketch_realization,
 )
-from .rigidity.matching import irreducible_blocks
+from .rigidity.matching import strongly_connected
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
 from .utils import UnionFind
 from .validation import validated
@@ -58,9 +60,12 @@ __all__ = [
     "Decomposition",
     "DyadKind",
     "GroupPair",
+    "GroupPlan",
+    "build_decomposition",
     "classify_group",
     "decompose",
     "driver_candidates",
+    "plan_groups",
     "roman",
 ]
 
@@ -274,6 +279,9 @@ def decompose(
     mechanism driven by the same drivers, when already computed
     (:func:`~structure.mobility.mobility_analysis`).
 
+    The same as :func:`build_decomposition` of :func:`plan_groups`: a caller
+    holding large analyses can let them go between the two.
+
     Raises
     ------
     DecompositionError
@@ -281,6 +289,39 @@ def decompose(
         determine.
     MobilityError
         A driver whose motion the other pairs already fix.
+    """
+    return build_decomposition(plan_groups(mechanism, drivers, analyses=analyses))
+
+
+@dataclass(frozen=True, slots=True)
+class GroupPlan:
+    """Which links form each Assur group, before the groups are built.
+
+    ``members`` holds each group's links (keyed by its merged block),
+    ``order`` the blocks in solve order, ``edges`` the dependencies between
+    blocks; ``mechanism`` is what remains once the redundant links and pairs
+    (``removed_links``, ``removed_pairs``) are set aside. Small: the rank
+    analyses it comes from are no longer needed.
+    """
+
+    mechanism: Mechanism
+    drivers: tuple[str, ...]
+    members: Mapping[int, list[str]]
+    order: Sequence[int]
+    edges: set[tuple[int, int]]
+    removed_links: tuple[str, ...]
+    removed_pairs: tuple[int, ...]
+
+
+def plan_groups(
+    mechanism: Mechanism,
+    drivers: Sequence[str] | None = None,
+    *,
+    analyses: tuple[RankAnalysis, RankAnalysis | None] | None = None,
+) -> GroupPlan:
+    """The first half of :func:`decompose`: which links form each group, in which order.
+
+    Raises as :func:`decompose` does.
     """
     drivers = tuple(mechanism.driver_links if drivers is None else drivers)
     if any(p.kind is PairKind.H for p in mechanism.pairs):
@@ -314,16 +355,29 @@ def decompose(
         raise DecompositionError(
             "the drivers do not determine link(s) " + ", ".join(loose or ["?"]), loose
         )
-    return _groups_from_blocks(current, drivers, structural, removed_links, removed_pairs)
+    return _plan_from_blocks(current, drivers, structural, removed_links, removed_pairs)
 
 
-def _groups_from_blocks(
+def build_decomposition(plan: GroupPlan) -> Decomposition:
+    """The second half of :func:`decompose`: the groups of ``plan`` and their DAG."""
+    return _decomposition(
+        plan.mechanism,
+        plan.drivers,
+        plan.members,
+        plan.order,
+        plan.edges,
+        plan.removed_links,
+        plan.removed_pairs,
+    )
+
+
+def _plan_from_blocks(
     mechanism: Mechanism,
-    drivers: Sequence[str],
+    drivers: tuple[str, ...],
     analysis: RankAnalysis,
     removed_links: Sequence[str],
     removed_pairs: Sequence[int],
-) -> Decomposition:
+) -> GroupPlan:
     """Assur groups from the irreducible blocks of the driven system.
 
     A link belongs to the block that completes it. Blocks can be finer than
@@ -340,15 +394,21 @@ def _groups_from_blocks(
     owner = _block_owners(system, analysis.assigned, start, merged)
     _merge_split_pairs(system, analysis.assigned, owner, merged)
     nodes, edges, root = _merge_cycles(system, analysis.assigned, owner, merged)
+    del owner, merged
     members: dict[int, list[str]] = {}
-    for link in mechanism.moving_links:
+    first_position: dict[int, int] = {}  # of each block's first link, the order's key
+    for i, link in enumerate(mechanism.links):  # the ground (first) is never in start
         if link in start:
-            members.setdefault(root[start[link]], []).append(link)
-    position = {link: i for i, link in enumerate(mechanism.links)}
-    order = _topological_order(
-        nodes, edges, {b: min(position[x] for x in members[b]) for b in nodes}
-    )
-    return _decomposition(
+            b = root[start[link]]
+            found = members.get(b)
+            if found is None:
+                members[b] = [link]
+                first_position[b] = i
+            else:
+                found.append(link)
+    del root, start
+    order = _topological_order(nodes, edges, first_position)
+    return GroupPlan(
         mechanism, drivers, members, order, edges, tuple(removed_links), tuple(removed_pairs)
     )
 
@@ -405,17 +465,28 @@ def _merge_split_pairs(
     owner: Sequence[int | None],
     merged: UnionFind,
 ) -> None:
-    """Merge the blocks whose unknowns rows of one pair fix: a pair is never split."""
-    by_pair: dict[int, set[int]] = {}
+    """Merge the blocks whose unknowns rows of one pair fix: a pair is never split.
+
+    Most pairs lie in one block: only the first block of each pair is kept,
+    and a set of its blocks is made for the few pairs that lie in several.
+    """
+    first: dict[int, int] = {}
+    several: dict[int, set[int]] = {}
+    row_kind, row_pair = system.row_kind, system.row_pair
     for r, units in enumerate(assigned[: system.n_pair_rows]):
-        if system.row_kind[r] is _PIN:
+        if row_kind[r] is _PIN:
             continue
         for u in units:
             b = owner[u]
-            if b is not None:
-                by_pair.setdefault(system.row_pair[r], set()).add(b)
-    for blocks in by_pair.values():
-        if len(blocks) > 1:
+            if b is None:
+                continue
+            pid = row_pair[r]
+            known = first.setdefault(pid, b)
+            if known != b:
+                several.setdefault(pid, {known}).add(b)
+    for pid in first:
+        blocks = several.get(pid)
+        if blocks is not None:
             merged.union(*blocks)
 
 
@@ -435,19 +506,36 @@ def _merge_cycles(
         merged_owner = [None if b is None else root[b] for b in owner]
         edges = _block_dependencies(system, assigned, merged_owner)
         nodes = sorted(set(root.values()))
-        number = {b: i for i, b in enumerate(nodes)}
-        successors: list[list[int]] = [[] for _ in nodes]
-        for u, v in edges:
-            successors[number[u]].append(number[v])
-        # strongly connected components of the group graph: cycles merge
-        components = irreducible_blocks(
-            successors, [[i] for i in range(len(nodes))], len(nodes), as_successors=True
-        )
+        # strongly connected components of the group graph (nodes numbered in order,
+        # edges as flat arrays): cycles merge
+        sources, targets = _numbered_edges(nodes, edges)
+        components = strongly_connected(sources, targets, len(nodes))
+        del sources, targets
         cycles = [c for c in components if len(c) > 1]
+        del components
         if not cycles:
             return nodes, edges, root
         for c in cycles:
             merged.union(*(nodes[i] for i in c))
+
+
+def _numbered_edges(
+    nodes: list[int], edges: set[tuple[int, int]]
+) -> tuple[Sequence[int], Sequence[int]]:
+    """The ``edges`` between sorted ``nodes`` as two sequences of node numbers, in set order.
+
+    A large mechanism's are numbered by numpy (a dict of its hundreds of
+    thousands of nodes would cost more memory than the edges themselves).
+    """
+    if len(nodes) < 2048:
+        number = {b: i for i, b in enumerate(nodes)}
+        return [number[u] for u, _ in edges], [number[v] for _, v in edges]
+    numbered = np.array(nodes, dtype=np.int64)
+    count = len(edges)
+    return (
+        np.searchsorted(numbered, np.fromiter((u for u, _ in edges), np.int64, count)),
+        np.searchsorted(numbered, np.fromiter((v for _, v in edges), np.int64, count)),
+    )
 
 
 def _block_dependencies(

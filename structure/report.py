@@ -19,7 +19,15 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .assur import AssurGroup, Decomposition, decompose, driver_candidates
+from .assur import (
+    AssurGroup,
+    Decomposition,
+    GroupPlan,
+    build_decomposition,
+    decompose,
+    driver_candidates,
+    plan_groups,
+)
 from .errors import DecompositionError, EdgeListError, MobilityError
 from .mobility import Mobility, mobility_analysis, rank_analyses
 from .model import Mechanism
@@ -123,6 +131,30 @@ def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Struc
 
 
 def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralReport:
+    # the rank analyses (a large mechanism's biggest structures) live only in _plan's
+    # frame: they are gone before the groups are built
+    mechanism, mob, replaced, rmob, replacements, drivers_used, chosen, plan = _plan(
+        mechanism, drivers
+    )
+    return StructuralReport(
+        mechanism,
+        mob,
+        replaced,
+        rmob,
+        replacements,
+        drivers_used,
+        chosen,
+        build_decomposition(plan),
+    )
+
+
+def _plan(
+    mechanism: Mechanism, drivers: Sequence[str] | None
+) -> tuple[
+    Mechanism, Mobility, Mechanism, Mobility, tuple[Replacement, ...], tuple[str, ...], bool,
+    GroupPlan,
+]:  # fmt: skip
+    """Everything :func:`analyze` finds but the groups themselves, which ``plan`` names."""
     if drivers is not None:
         mechanism = mechanism.with_drivers(drivers)
     missing = sketch_problems(mechanism)
@@ -160,10 +192,11 @@ def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralR
         rmob, generic, geometric = mobility_analysis(replaced, drivers_used, generic=picked)
     elif chosen:
         generic, geometric = rank_analyses(replaced, drivers_used, generic=picked)
-    decomposition = decompose(replaced, drivers_used, analyses=(generic, geometric))
-    return StructuralReport(
-        mechanism, mob, replaced, rmob, replacements, tuple(drivers_used), chosen, decomposition
-    )
+    del picked  # its system is generic's when it was reused
+    plan = plan_groups(replaced, drivers_used, analyses=(generic, geometric))
+    return (
+        mechanism, mob, replaced, rmob, tuple(replacements), tuple(drivers_used), chosen, plan
+    )  # fmt: skip
 
 
 @dataclass(frozen=True, slots=True)

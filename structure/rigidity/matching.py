@@ -20,11 +20,13 @@ algorithms", SIAM J. Comput. 1 (1972).
 
 from __future__ import annotations
 
+from array import array
 from collections.abc import Sequence
+from itertools import repeat
 
 import numpy as np
 
-__all__ = ["Matcher", "irreducible_blocks"]
+__all__ = ["Matcher", "irreducible_blocks", "strongly_connected"]
 
 
 class Matcher:
@@ -184,24 +186,40 @@ def irreducible_blocks(
     [[0], [1, 2]]
     """
     if as_successors:
-        sources = [v for v, succ in enumerate(adj) for _ in succ]
-        targets = [w for succ in adj for w in succ]
-    else:
-        sources, targets = _dependency_edges(adj, assigned)
-    start, flat = _adjacency_arrays(sources, targets, n_unknowns)
-    del sources, targets
+        sources = array("i", [v for v, succ in enumerate(adj) for _ in succ])
+        targets = array("i", [w for succ in adj for w in succ])
+        return strongly_connected(sources, targets, n_unknowns)
+    start, flat = _adjacency_arrays(*_dependency_edges(adj, assigned), n_unknowns)
     return _strongly_connected(start, flat, n_unknowns)
+
+
+def strongly_connected(
+    sources: Sequence[int], targets: Sequence[int], n_nodes: int
+) -> list[list[int]]:
+    """Strongly connected components of the digraph with edges ``sources[k] -> targets[k]``.
+
+    Sources first, each component sorted, in a deterministic order: the
+    successors of a node are taken in the order of its edges. The same as
+    :func:`irreducible_blocks` with ``as_successors=True``, without a list
+    of successors per node.
+
+    >>> strongly_connected([0, 1, 2], [1, 2, 1], 3)
+    [[0], [1, 2]]
+    """
+    start, flat = _adjacency_arrays(sources, targets, n_nodes)
+    return _strongly_connected(start, flat, n_nodes)
 
 
 def _dependency_edges(
     adj: Sequence[tuple[int, ...]], assigned: Sequence[Sequence[int]]
-) -> tuple[list[int], list[int]]:
+) -> tuple[array, array]:
     """``w -> u`` when a row matched to ``u`` also touches ``w``: sources and targets, in order.
 
     Self-loops (``w == u``) are listed too; :func:`_adjacency_arrays` drops them.
+    Flat arrays of machine integers: a large mechanism has about a million edges.
     """
-    sources: list[int] = []
-    targets: list[int] = []
+    sources = array("i")
+    targets = array("i")
     for r, units in enumerate(assigned):
         if not units:
             continue
@@ -209,33 +227,57 @@ def _dependency_edges(
         first = units[0]
         if len(units) == 1 or all(u == first for u in units):
             sources.extend(a)
-            targets.extend([first] * len(a))
+            targets.extend(repeat(first, len(a)))
             continue
         for u in set(units):
             sources.extend(a)
-            targets.extend([u] * len(a))
+            targets.extend(repeat(u, len(a)))
     return sources, targets
 
 
+#: from this many edges on, the successor arrays are sorted by numpy (below, by a
+#: counting sort in Python, which costs less for the small mechanisms of a batch)
+_NUMPY_EDGES = 2048
+
+
 def _adjacency_arrays(
-    sources: list[int], targets: list[int], n_nodes: int
-) -> tuple[list[int], list[int]]:
-    """Successor lists as one flat list: ``flat[start[v]:start[v + 1]]`` are ``v``'s, in order.
+    sources: Sequence[int], targets: Sequence[int], n_nodes: int
+) -> tuple[array, array]:
+    """Successor lists as one flat array: ``flat[start[v]:start[v + 1]]`` are ``v``'s, in order.
 
-    Two lists instead of one list per node: a large mechanism's digraph has
-    hundreds of thousands of nodes. Self-loops are dropped.
+    Two flat arrays of machine integers instead of one list per node: a large
+    mechanism's digraph has hundreds of thousands of nodes. Self-loops are dropped.
     """
-    src = np.asarray(sources, dtype=np.int64)
-    dst = np.asarray(targets, dtype=np.int64)
-    keep = src != dst
-    src, dst = src[keep], dst[keep]
-    order = np.argsort(src, kind="stable")
-    start = np.zeros(n_nodes + 1, dtype=np.int64)
-    np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
-    return start.tolist(), dst[order].tolist()
+    if len(sources) >= _NUMPY_EDGES:
+        src = np.asarray(sources, dtype=np.intc)
+        dst = np.asarray(targets, dtype=np.intc)
+        keep = src != dst
+        src, dst = src[keep], dst[keep]
+        del keep
+        start = np.zeros(n_nodes + 1, dtype=np.int64)
+        np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
+        return _as_array(start), _as_array(dst[np.argsort(src, kind="stable")])
+    pairs = [(v, w) for v, w in zip(sources, targets, strict=True) if v != w]
+    counts = array("i", [0]) * (n_nodes + 1)
+    for v, _ in pairs:
+        counts[v + 1] += 1
+    for v in range(n_nodes):
+        counts[v + 1] += counts[v]
+    fill = counts[:-1]
+    flat = array("i", [0]) * len(pairs)
+    for v, w in pairs:
+        flat[fill[v]] = w
+        fill[v] += 1
+    return counts, flat
 
 
-def _strongly_connected(start: list[int], flat: list[int], n_nodes: int) -> list[list[int]]:
+def _as_array(values: np.ndarray) -> array:
+    out = array("i")
+    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=np.intc)).cast("B"))
+    return out
+
+
+def _strongly_connected(start: array, flat: array, n_nodes: int) -> list[list[int]]:
     """Strongly connected components, sources first (Tarjan, iterative); each one sorted.
 
     The successors of ``v`` are ``flat[start[v]:start[v + 1]]``. A node whose
@@ -243,8 +285,8 @@ def _strongly_connected(start: list[int], flat: list[int], n_nodes: int) -> list
     lowers a link value again (no separate on-stack flags).
     """
     done = n_nodes + 1
-    index = [-1] * n_nodes
-    low = [0] * n_nodes
+    index = array("i", [-1]) * n_nodes
+    low = array("i", [0]) * n_nodes
     ptr = start[:-1]
     stack: list[int] = []
     comps: list[list[int]] = []

@@ -23,7 +23,8 @@ its dependent set.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from array import array
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -73,8 +74,9 @@ class RankAnalysis:
     blocks : list of list of int or None
         Irreducible blocks of the driven system in solve order, when it is
         square and regular (the usual case); ``None`` otherwise.
-    assigned : list of list of int
-        The matching behind ``blocks``.
+    assigned : list of tuple of int
+        The matching behind ``blocks``: the unknown blocks each row is matched
+        to (one entry per unit; tuples, which cost half a list's memory).
     method : str
         ``'structural'`` (matching + block determinants) or ``'dense'``.
     """
@@ -85,7 +87,7 @@ class RankAnalysis:
     dof: int
     free: list[tuple[int, int]]
     blocks: list[list[int]] | None
-    assigned: list[list[int]] = field(repr=False)
+    assigned: Sequence[Sequence[int]] = field(repr=False)
     method: str
 
     @property
@@ -122,7 +124,7 @@ def _probe_system(system: ConstraintSystem, free: list[tuple[int, int]]) -> Cons
 def _singular_blocks(
     system: ConstraintSystem,
     blocks: list[list[int]],
-    assigned: list[list[int]],
+    assigned: Sequence[Sequence[int]],
     seed: int,
     which: Sequence[int] | None = None,
 ) -> list[int]:
@@ -141,27 +143,21 @@ def _singular_blocks(
     since a random pose may be near-singular by chance and is checked again.
     """
     offsets, _ = system.scalar_offsets()
-    uo = offsets.tolist()
+    uo = _int_array(offsets)
     rows_of = _rows_of_blocks(system, blocks, assigned)
-    trivial = (RowKind.DRIVER, RowKind.PROBE)
     representative: dict[tuple, int] = {}
-    same_as: dict[int, int] = {}
     evaluated: list[tuple[int, list[list[float]]]] = []
     bad: list[int] = []
     realization: Realization | None = None
     for b in range(len(blocks)) if which is None else which:
         units = blocks[b]
-        rows = rows_of[b]
-        if len(units) == 1 and len(rows) == 1 and system.row_kind[rows[0]] in trivial:
-            continue  # a single driver/probe row on one block is regular by construction
+        rows = rows_of(b)
+        if _trivially_regular(system, units, rows):
+            continue
         if which is None:
             pattern = _block_pattern(system, units, rows, assigned)
-            if pattern in _REGULAR_PATTERNS:
-                continue
-            first = representative.setdefault(pattern, b)
-            if first != b:
-                same_as[b] = first
-                continue
+            if pattern in _REGULAR_PATTERNS or representative.setdefault(pattern, b) != b:
+                continue  # a repeat is judged with its pattern's first block, below
         if realization is None:
             realization = random_realization(system, seed)
         a = _block_matrix(system, realization, units, rows, assigned, uo)
@@ -172,11 +168,52 @@ def _singular_blocks(
     if evaluated:
         ratios = _singular_ratios([a for _, a in evaluated]).tolist()
         bad.extend(b for (b, _), x in zip(evaluated, ratios, strict=True) if x <= _RANK_TOL)
-    singular = set(bad)
     if which is None:
+        singular = set(bad)
+        if singular:  # rare: the repeats of a singular pattern's first block are singular too
+            bad.extend(_repeats_of(system, blocks, assigned, rows_of, representative, singular))
         _remember_regular(pattern for pattern, b in representative.items() if b not in singular)
-    bad.extend(b for b, first in same_as.items() if first in singular)
     return sorted(bad)
+
+
+def _trivially_regular(system: ConstraintSystem, units: Sequence[int], rows: Sequence[int]) -> bool:
+    """A single driver/probe row on one block: regular by construction."""
+    return len(units) == 1 and len(rows) == 1 and system.row_kind[rows[0]] in _TRIVIAL
+
+
+_TRIVIAL = (RowKind.DRIVER, RowKind.PROBE)
+
+
+def _repeats_of(
+    system: ConstraintSystem,
+    blocks: list[list[int]],
+    assigned: Sequence[Sequence[int]],
+    rows_of: Callable[[int], Sequence[int]],
+    representative: dict[tuple, int],
+    singular: set[int],
+) -> list[int]:
+    """The blocks (in order) whose pattern's first block is in ``singular``, other than it.
+
+    The patterns are computed again rather than remembered for every block:
+    a large mechanism has hundreds of thousands of blocks, and a singular
+    pattern is rare.
+    """
+    out: list[int] = []
+    for b, units in enumerate(blocks):
+        rows = rows_of(b)
+        if _trivially_regular(system, units, rows):
+            continue
+        first = representative.get(_block_pattern(system, units, rows, assigned))
+        if first is not None and first != b and first in singular:
+            out.append(b)
+    return out
+
+
+def _int_array(values: np.ndarray) -> array:
+    """``values`` as a flat array of machine integers (8 bytes each, not a list's 36)."""
+    out = array("q")
+    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=np.int64)).cast("B"))
+    return out
 
 
 #: block patterns found regular at a random realization (see :func:`_singular_blocks`)
@@ -210,22 +247,46 @@ def _singular_ratios(matrices: Sequence[list[list[float]]]) -> np.ndarray:
 
 
 def _rows_of_blocks(
-    system: ConstraintSystem, blocks: list[list[int]], assigned: list[list[int]]
-) -> list[list[int]]:
-    """The rows matched into each block."""
-    block_of = [0] * len(system.unknowns)
+    system: ConstraintSystem, blocks: list[list[int]], assigned: Sequence[Sequence[int]]
+) -> Callable[[int], Sequence[int]]:
+    """The rows matched into each block, in order: ``rows_of(b)`` for block ``b``.
+
+    Held as two flat integer arrays (each block's rows are a slice of one),
+    not a list per block: a large mechanism has hundreds of thousands of blocks.
+    """
+    block_of = array("i", [0]) * len(system.unknowns)
     for b, units in enumerate(blocks):
         for u in units:
             block_of[u] = b
-    rows_of: list[list[int]] = [[] for _ in blocks]
+    # a counting sort of the matched rows by block, stable in row order
+    start = array("i", [0]) * (len(blocks) + 1)
+    row_block = array("i", [-1]) * len(assigned)
     for r, units in enumerate(assigned):
         if units:
-            rows_of[block_of[units[0]]].append(r)
+            b = row_block[r] = block_of[units[0]]
+            start[b + 1] += 1
+    del block_of
+    for b in range(len(blocks)):
+        start[b + 1] += start[b]
+    fill = start[:-1]
+    flat = array("i", [0]) * start[-1]
+    for r, b in enumerate(row_block):
+        if b >= 0:
+            flat[fill[b]] = r
+            fill[b] += 1
+    del fill, row_block
+
+    def rows_of(b: int) -> Sequence[int]:
+        return flat[start[b] : start[b + 1]]
+
     return rows_of
 
 
 def _block_pattern(
-    system: ConstraintSystem, units: list[int], rows: list[int], assigned: list[list[int]]
+    system: ConstraintSystem,
+    units: list[int],
+    rows: Sequence[int],
+    assigned: Sequence[Sequence[int]],
 ) -> tuple:
     """What a block's regularity depends on: sizes, row kinds, local incidences, shared points."""
     local = {u: i for i, u in enumerate(units)}
@@ -254,9 +315,9 @@ def _block_matrix(
     system: ConstraintSystem,
     realization: Realization,
     units: list[int],
-    rows: list[int],
-    assigned: list[list[int]],
-    uo: list[int],
+    rows: Sequence[int],
+    assigned: Sequence[Sequence[int]],
+    uo: Sequence[int],
 ) -> list[list[float]] | None:
     """The block's square Jacobian at ``realization``, or None when its rows do not fill it."""
     cols: dict[int, int] = {}
@@ -296,18 +357,19 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     """
     matcher, unmatched = _match(system)
     free = matcher.free_units
+    rank = sum(len(a) for a in matcher.assigned[: system.n_pair_rows])
+    # the matching's tuples are kept as they are; the rest of the matcher goes now,
+    # before the blocks need memory (a large mechanism's matcher is tens of MB)
+    assigned: list[tuple[int, ...]] = matcher.assigned
+    del matcher
     probed = _probe_system(system, free)
-    assigned = [list(a) for a in matcher.assigned]
-    for u, k in free:
-        assigned.append([u] * k)
+    assigned.extend((u,) * k for u, k in free)
     blocks = irreducible_blocks(probed.row_adj, assigned, len(system.unknowns))
     suspects = _singular_blocks(probed, blocks, assigned, seed)
     if suspects:
         # a generic dependency persists at another random pose; a near-coincidence does not
         suspects = _singular_blocks(probed, blocks, assigned, seed + 1, suspects)
     if not suspects:
-        n_pairs = system.n_pair_rows
-        rank = sum(len(a) for a in matcher.assigned[:n_pairs])
         return RankAnalysis(
             system,
             unmatched,

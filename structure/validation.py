@@ -62,6 +62,7 @@ __all__ = [
     "check_point",
     "load_kind",
     "pair_kind",
+    "tooth_number",
     "validated",
 ]
 
@@ -146,6 +147,26 @@ def check_pair_links(a: str, b: str) -> None:
     """A pair joins two different links."""
     if a == b:
         raise StatementError(f"pair joins link {a} to itself")
+
+
+def tooth_number(value: Any) -> Any:
+    """A tooth number as written, read as the model takes it (both readers use this).
+
+    ``"?"`` is None (unknown); digits, as a number or as text, an int; anything
+    else comes back unchanged for :func:`check_pair` to refuse with its reason.
+
+    >>> tooth_number("24"), tooth_number(24), tooth_number("?"), tooth_number("2.5")
+    (24, 24, None, '2.5')
+    """
+    text = str(value)
+    if text == "?":
+        return None
+    if text.isdigit():
+        try:
+            return int(text)
+        except ValueError:  # a digit that is no decimal digit (²)
+            return value
+    return value
 
 
 def check_pair_option(kind: PairKind, key: str) -> None:

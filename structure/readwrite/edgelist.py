@@ -70,6 +70,7 @@ from ..validation import (
     check_pair_links,
     check_pair_option,
     pair_kind,
+    tooth_number,
     validated,
 )
 from .jsonformat import mechanism_from_json
@@ -261,20 +262,8 @@ def _option_names(text: str) -> tuple[str | None, ...]:
     return tuple(part or None for part in text.split(","))
 
 
-def _tooth_number(text: str) -> int | str | None:
-    """A tooth number: a positive integer, or ``?`` (unknown, None); other text stays text."""
-    if text == "?":
-        return None
-    if text.isdigit():
-        try:
-            return int(text)
-        except ValueError:  # a digit that is no decimal digit (²)
-            return text
-    return text
-
-
 def _tooth_numbers(text: str) -> tuple[int | str | None, ...]:
-    return tuple(_tooth_number(part) for part in text.split(","))
+    return tuple(tooth_number(part) for part in text.split(","))
 
 
 _OPTION_READERS: dict[str, Any] = {

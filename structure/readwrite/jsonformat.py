@@ -37,7 +37,7 @@ from ..model import (
     make_pair,
     make_point,
 )
-from ..validation import DRIVER_KEYS, validated
+from ..validation import DRIVER_KEYS, tooth_number, validated
 
 __all__ = [
     "decode_json",
@@ -291,25 +291,12 @@ def _pair_options(item: dict[str, Any], where: str, problems: _Problems) -> dict
         if not isinstance(teeth, list) or len(teeth) != 2:
             problems.add(where, "'z' must be [za, zb] (integers or '?')")
             return options
-        options["z"] = tuple(_tooth_number(t) for t in teeth)
+        options["z"] = tuple(tooth_number(t) for t in teeth)
     if item.get("internal") is not None:
         options["internal"] = _text(item["internal"])
     if item.get("module") is not None:
         options["module"] = _module(item["module"])
     return options
-
-
-def _tooth_number(value: Any) -> Any:
-    """A tooth number as the model takes it: ``"?"`` is None; digits (even as text) an int."""
-    text = str(value)
-    if text == "?":
-        return None
-    if text.isdigit():
-        try:
-            return int(text)
-        except ValueError:  # a digit that is no decimal digit (²)
-            return value
-    return value
 
 
 def _module(value: Any) -> Any:

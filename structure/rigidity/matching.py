@@ -170,25 +170,18 @@ def irreducible_blocks(
     adj: Sequence[tuple[int, ...]],
     assigned: Sequence[Sequence[int]],
     n_unknowns: int,
-    *,
-    as_successors: bool = False,
 ) -> list[list[int]]:
     """Strongly connected components of the matched dependency digraph, sources first.
 
     ``adj[r]`` are the unknowns row ``r`` touches, ``assigned[r]`` those it is
     matched to. Each block is a sorted list of unknown indices; blocks come in
     a topological order (every block after the blocks it depends on); the
-    order is deterministic. With ``as_successors=True``, ``adj`` is already
-    the digraph (``adj[v]`` lists the successors of ``v``) and ``assigned``
-    is ignored: plain strongly connected components, sources first.
+    order is deterministic. (For a digraph given by its edges,
+    :func:`strongly_connected`.)
 
     >>> irreducible_blocks([(0,), (0, 1), (1, 2), (2, 1)], [[0], [1], [2], [1]], 3)
     [[0], [1, 2]]
     """
-    if as_successors:
-        sources = array("i", [v for v, succ in enumerate(adj) for _ in succ])
-        targets = array("i", [w for succ in adj for w in succ])
-        return strongly_connected(sources, targets, n_unknowns)
     start, flat = _adjacency_arrays(*_dependency_edges(adj, assigned), n_unknowns)
     return _strongly_connected(start, flat, n_unknowns)
 
@@ -199,9 +192,7 @@ def strongly_connected(
     """Strongly connected components of the digraph with edges ``sources[k] -> targets[k]``.
 
     Sources first, each component sorted, in a deterministic order: the
-    successors of a node are taken in the order of its edges. The same as
-    :func:`irreducible_blocks` with ``as_successors=True``, without a list
-    of successors per node.
+    successors of a node are taken in the order of its edges.
 
     >>> strongly_connected([0, 1, 2], [1, 2, 1], 3)
     [[0], [1, 2]]

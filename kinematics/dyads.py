@@ -50,7 +50,16 @@ from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
 
-__all__ = ["NOT_CLOSED", "PinCache", "PointLayout", "frame_dyad", "laid_out", "place_dyad"]
+__all__ = [
+    "NOT_CLOSED",
+    "PinCache",
+    "PointLayout",
+    "frame_dyad",
+    "known_frame",
+    "known_pin",
+    "laid_out",
+    "place_dyad",
+]
 
 
 @dataclass
@@ -130,7 +139,7 @@ class PinCache(dict):
 # ---------------------------------------------------------------- shared pieces
 
 
-def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
+def known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
     """The frame of a link solved earlier (the ground's if it is not a moving link).
 
     ``tables`` are the solve's ``(q, qd, qdd)`` tables; a link solved without a
@@ -253,7 +262,7 @@ def _arrays(n: int, *values):
     return tuple(v if isinstance(v, np.ndarray) else np.full(n, float(v)) for v in values)
 
 
-def _pin(
+def known_pin(
     frames: dict[str, Frame],
     tables: tuple,
     pins: dict,
@@ -261,19 +270,22 @@ def _pin(
     point: np.ndarray,
     rates: bool,
     inputs: np.ndarray,
+    also: tuple[str, ...] = (),
 ):
     """``(x, y, vx, vy, ax, ay)`` of a pin on a known link, each computed once per solve.
 
     Without ``rates``, the rates are None. A named pin of a sweep's layout
-    is written into its row (:meth:`PinCache.targets`).
+    is written into its row (:meth:`PinCache.targets`), whether the layout
+    names it under ``link`` or under one of the links ``also`` jointed there.
     """
     key = (link, float(point[0]), float(point[1]))
     found = pins.get(key)
     if found is None:
-        frame = _known_frame(frames, tables, link)
+        frame = known_frame(frames, tables, link)
         targets = None
         if isinstance(pins, PinCache) and frame is not GROUND_FRAME:
-            targets = pins.targets((key,), inputs, rates)
+            keys = (key, *((other, key[1], key[2]) for other in also))
+            targets = pins.targets(keys, inputs, rates)
         if targets is not None:
             frame.point_into(point, targets)
             found = targets if rates else (*targets, None, None, None, None)
@@ -302,7 +314,7 @@ class _FrameSolve:
     watch: list | None = None
 
     def pin(self, link: str, point: np.ndarray) -> tuple:
-        return _pin(self.frames, self.tables, self.pins, link, point, self.rates, self.inputs)
+        return known_pin(self.frames, self.tables, self.pins, link, point, self.rates, self.inputs)
 
     def targets(self, links: tuple, point: np.ndarray) -> tuple | None:
         """Where to write point ``point`` (sketch) of any of ``links``: its layout row, or None."""
@@ -570,7 +582,7 @@ def _frame_rrp(solve: _FrameSolve, ext: Mapping[str, GroupPair], c: np.ndarray) 
         return False
     s1 = c - b
     len1 = float(s1 @ s1)
-    guide = _known_frame(solve.frames, solve.tables, ext[slider].links[1])
+    guide = known_frame(solve.frames, solve.tables, ext[slider].links[1])
     pin_b = bx, by, bvx, bvy, bax, bay = solve.pin(ext[rod].links[1], b)
     # the guide's point at C in the sketch
     origin = guide.point(c) if solve.rates else (*guide.position(c), None, None, None, None)

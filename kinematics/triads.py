@@ -51,8 +51,8 @@ from functools import cached_property
 
 import numpy as np
 
-from .dyads import PinCache
-from .frames import GROUND_FRAME, Frame, frame_of_columns
+from .dyads import PinCache, known_frame, known_pin
+from .frames import Frame
 from .newton import CONTINUATION_STEP
 from .plan import GroupStep, SolvePlan
 
@@ -586,55 +586,23 @@ def _reach(triad: Triad) -> float:
     return max(float(np.hypot(*p)) for lead in triad.leads for p in (lead.inner, lead.outer))
 
 
-def _known_frame(frames: dict[str, Frame], tables: tuple, link: str) -> Frame:
-    """The frame of a link solved before the triad (the ground's if it is not a moving link)."""
-    frame = frames.get(link)
-    if frame is not None:
-        return frame
-    q, qd, qdd = tables
-    if link not in q:
-        return GROUND_FRAME
-    rates = link in qd
-    frame = frames[link] = frame_of_columns(
-        q[link], qd[link] if rates else None, qdd[link] if rates else None
-    )
-    return frame
-
-
 def _outer_position(frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead) -> tuple:
     """``(x, y)`` of a lead's outer pin: the solve's, or from its known link's frame."""
     found = pins.get((lead.known, float(lead.outer[0]), float(lead.outer[1])))
     if found is not None:
         return found[:2]
-    return _known_frame(frames, tables, lead.known).position(lead.outer)
+    return known_frame(frames, tables, lead.known).position(lead.outer)
 
 
 def _outer_pin(
     frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead, rates: bool, inputs
 ) -> tuple:
-    """``(x, y, vx, vy, ax, ay)`` of a lead's outer pin, from its known link's frame, once.
+    """``(x, y, vx, vy, ax, ay)`` of a lead's outer pin (:func:`~kinematics.dyads.known_pin`).
 
-    Kept in ``pins`` under ``(link, x, y)`` as the dyads keep theirs
-    (:class:`~kinematics.dyads.PinCache`), written into its row of a sweep's
-    layout when it has one (under the known link or the lead); without
-    ``rates`` only ``(x, y)``. The positions are :func:`_outer_position`'s.
+    Written into its row of a sweep's layout when the layout names it under
+    the known link or the lead; without ``rates`` only ``(x, y)``.
     """
-    x, y = float(lead.outer[0]), float(lead.outer[1])
-    key = (lead.known, x, y)
-    found = pins.get(key)
-    if found is None:
-        frame = _known_frame(frames, tables, lead.known)
-        targets = None
-        if isinstance(pins, PinCache) and frame is not GROUND_FRAME:
-            targets = pins.targets((key, (lead.link, x, y)), inputs, rates)
-        if targets is not None:
-            frame.point_into(lead.outer, targets)
-            found = targets if rates else (*targets, None, None, None, None)
-        elif rates:
-            found = frame.point(lead.outer)
-        else:
-            found = (*frame.position(lead.outer), None, None, None, None)
-        pins[key] = found
+    found = known_pin(frames, tables, pins, lead.known, lead.outer, rates, inputs, (lead.link,))
     return found if rates else found[:2]
 
 

@@ -34,6 +34,7 @@ import itertools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
+from operator import attrgetter
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -325,7 +326,7 @@ def plan_groups(
     Raises as :func:`decompose` does.
     """
     drivers = tuple(mechanism.driver_links if drivers is None else drivers)
-    if any(p.kind is PairKind.H for p in mechanism.pairs):
+    if PairKind.H in map(attrgetter("kind"), mechanism.pairs):
         raise DecompositionError("replace the higher pairs before decomposing")
     if analyses is None:
         generic = generic_rank(constraint_system(mechanism, drivers))
@@ -395,9 +396,10 @@ def _plan_from_blocks(
     """
     assert analysis.blocks is not None
     if analysis.system.n_pair_rows >= NUMPY_ROWS:
-        nodes, edges, link_root = _merged_blocks_by_numpy(drivers, analysis)
+        nodes, edges, link_root, ascending = _merged_blocks_by_numpy(drivers, analysis)
     else:
         nodes, edges, link_root = _merged_blocks_by_rows(drivers, analysis)
+        ascending = False
     members: dict[int, list[str]] = {}
     first_position: dict[int, int] = {}  # of each block's first link, the order's key
     # the ground is first in mechanism.links; the moving links follow in their order
@@ -409,7 +411,7 @@ def _plan_from_blocks(
                 first_position[b] = i
             else:
                 found.append(link)
-    order = _topological_order(nodes, edges, first_position)
+    order = _topological_order(nodes, edges, first_position, ascending=ascending)
     return GroupPlan(
         mechanism, drivers, members, order, edges, tuple(removed_links), tuple(removed_pairs)
     )
@@ -419,8 +421,14 @@ def _plan_from_blocks(
 _MergedBlocks = tuple[list[int], set[tuple[int, int]], list[int]]
 
 
-def _merged_blocks_by_numpy(drivers: Sequence[str], analysis: RankAnalysis) -> _MergedBlocks:
-    """The merged blocks of :func:`_plan_from_blocks`, found with numpy."""
+def _merged_blocks_by_numpy(
+    drivers: Sequence[str], analysis: RankAnalysis
+) -> tuple[list[int], set[tuple[int, int]], list[int], bool]:
+    """The merged blocks of :func:`_plan_from_blocks`, found with numpy.
+
+    The fourth value tells whether every dependency goes from a block whose
+    first link comes earlier to one whose first link comes later.
+    """
     system, blocks = analysis.system, analysis.blocks
     assert blocks is not None
     rows = _PairRows.of(system, analysis.assigned)
@@ -428,8 +436,8 @@ def _merged_blocks_by_numpy(drivers: Sequence[str], analysis: RankAnalysis) -> _
     merged = UnionFind(start[start >= 0].tolist())
     owner = _block_owners(system, rows, start, merged)
     _merge_split_pairs(system, rows, owner, merged)
-    nodes, edges, root = _merge_cycles(rows, owner, merged, len(blocks))
-    return nodes, edges, np.where(start >= 0, root[np.maximum(start, 0)], -1).tolist()
+    nodes, edges, root, ascending = _merge_cycles(rows, owner, merged, start)
+    return nodes, edges, np.where(start >= 0, root[np.maximum(start, 0)], -1).tolist(), ascending
 
 
 def _merged_blocks_by_rows(drivers: Sequence[str], analysis: RankAnalysis) -> _MergedBlocks:
@@ -523,7 +531,7 @@ class _PairRows:
             units = np.full((n, 2), -1, dtype=np.int32)
             for r, got in enumerate(assigned[:n]):
                 units[r, : len(got)] = got
-        pin = np.array([kind is _PIN for kind in system.row_kind[:n]], dtype=bool)
+        pin = system.row_codes()[:n] == _PIN_CODE
         return cls(
             units.astype(np.int64),
             pin,
@@ -610,30 +618,41 @@ def _merge_split_pairs(
 
 
 def _merge_cycles(
-    rows: _PairRows, owner: np.ndarray, merged: UnionFind, n_blocks: int
-) -> tuple[list[int], set[tuple[int, int]], np.ndarray]:
+    rows: _PairRows, owner: np.ndarray, merged: UnionFind, start: np.ndarray
+) -> tuple[list[int], set[tuple[int, int]], np.ndarray, bool]:
     """Merge blocks that depend on each other until their dependencies form a DAG.
 
-    Returns the merged blocks (each named by a member), the DAG's edges and
-    the merged block of every block (-1 for none).
+    Returns the merged blocks (each named by a member), the DAG's edges, the
+    merged block of every block (-1 for none), and whether every edge goes
+    from a block whose first link (``start`` holds each link's block) comes
+    earlier to one whose first link comes later: then there is no cycle to
+    look for, and the order by first link is the solve order.
     """
+    n_blocks = int(start.max(initial=-1)) + 1
+    linked = np.flatnonzero(start >= 0)
     while True:
         root = np.full(n_blocks, -1, dtype=np.int64)
         members = list(merged)
         root[members] = [merged[b] for b in members]
         merged_owner = np.where(owner >= 0, root[np.maximum(owner, 0)], -1)
-        edges = _block_dependencies(rows, merged_owner)
+        sources, targets = _block_dependencies(rows, merged_owner)
         nodes = np.sort(root[root >= 0])
         nodes = nodes[np.r_[True, nodes[1:] != nodes[:-1]][: len(nodes)]]
+        first_link = np.full(n_blocks, len(start), dtype=np.int64)
+        np.minimum.at(first_link, root[start[linked]], linked)
+        if bool((first_link[sources] < first_link[targets]).all()):
+            edges = set(zip(sources.tolist(), targets.tolist(), strict=True))
+            return nodes.tolist(), edges, root, True
+        edges = set(zip(sources.tolist(), targets.tolist(), strict=True))
         # strongly connected components of the group graph (nodes numbered in order,
-        # edges as flat arrays): cycles merge
-        sources, targets = _numbered_edges(nodes, edges)
-        components = strongly_connected(sources, targets, len(nodes))
-        del sources, targets
+        # edges as flat arrays, in the set's order): cycles merge
+        numbered = _numbered_edges(nodes, edges)
+        components = strongly_connected(*numbered, len(nodes))
+        del numbered
         cycles = [c for c in components if len(c) > 1]
         del components
         if not cycles:
-            return nodes.tolist(), edges, root
+            return nodes.tolist(), edges, root, False
         for c in cycles:
             merged.union(*(int(nodes[i]) for i in c))
 
@@ -646,12 +665,12 @@ def _numbered_edges(
     return np.searchsorted(nodes, pairs[:, 0]), np.searchsorted(nodes, pairs[:, 1])
 
 
-def _block_dependencies(rows: _PairRows, merged_owner: np.ndarray) -> set[tuple[int, int]]:
-    """``(source, target)`` for each merged block a row of another block also touches.
+def _block_dependencies(rows: _PairRows, merged_owner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(sources, targets)``: each merged block a row of another block also touches.
 
     ``merged_owner`` is the merged block of each unknown (-1 for the knowns).
-    The edges are added in the order of the rows and of their unknowns, so
-    the set is the same as a loop over the rows would make.
+    The edges come in the order of the rows and of their unknowns (repeats
+    included), so a set made of them is the one a loop over the rows makes.
     """
     first = rows.units[:, 0]
     counts = np.diff(rows.adj_start)
@@ -659,7 +678,7 @@ def _block_dependencies(rows: _PairRows, merged_owner: np.ndarray) -> set[tuple[
     target = np.where(first >= 0, merged_owner[np.maximum(first, 0)], -1)[row_of]
     source = merged_owner[rows.adj[rows.adj_start[0] : rows.adj_start[-1]]]
     keep = (target >= 0) & (source >= 0) & (source != target)
-    return set(zip(source[keep].tolist(), target[keep].tolist(), strict=True))
+    return source[keep], target[keep]
 
 
 def _decomposition(
@@ -690,15 +709,19 @@ def _decomposition(
 
 
 def _topological_order(
-    nodes: Sequence[int], edges: set[tuple[int, int]], key: dict[int, int]
+    nodes: Sequence[int],
+    edges: set[tuple[int, int]],
+    key: dict[int, int],
+    *,
+    ascending: bool = False,
 ) -> list[int]:
     """Kahn's algorithm, always taking the ready node of smallest ``key`` (keys are distinct).
 
-    When every edge goes from a smaller key to a larger one, that order is
-    the nodes sorted by key (the smallest key left never waits for a
-    predecessor), found without the heap.
+    When every edge goes from a smaller key to a larger one (``ascending``
+    says it is known), that order is the nodes sorted by key (the smallest
+    key left never waits for a predecessor), found without the heap.
     """
-    if all(key[u] < key[v] for u, v in edges):
+    if ascending or all(key[u] < key[v] for u, v in edges):
         return sorted(nodes, key=key.__getitem__)
     indegree = dict.fromkeys(nodes, 0)
     out: dict[int, list[int]] = {}
@@ -720,6 +743,7 @@ def _topological_order(
 
 _R = PairKind.R  # enum member lookups are slow in hot loops
 _PIN = RowKind.PIN
+_PIN_CODE = list(RowKind).index(_PIN)  # its code in ConstraintSystem.row_codes
 
 _GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]
 

@@ -349,18 +349,35 @@ def flat_rows(adj_start: array, adj: array, units: array) -> FlatRows:
     first, second = slots[:, 0].copy(), slots[:, 1].copy()
     matched = ((first >= 0).astype(np.int8) + (second >= 0)).astype(np.int8)
     two = np.flatnonzero((second >= 0) & (second != first))
-    if len(two):  # a set's order of two ints: as the set itself gives it
-        ordered = np.array(
-            [tuple({a, b}) for a, b in zip(first[two].tolist(), second[two].tolist(), strict=True)],
-            dtype=np.int64,
-        ).reshape(-1, 2)
-        first[two], second[two] = ordered[:, 0], ordered[:, 1]
+    if len(two):
+        swap = ~_set_keeps_order(first[two], second[two])
+        first[two[swap]], second[two[swap]] = second[two[swap]], first[two[swap]]
     rows = np.concatenate([np.flatnonzero(first >= 0), two])
     distinct = np.concatenate([first[first >= 0], second[two]])
     order = np.argsort(rows * 2 + (np.arange(len(rows)) >= len(rows) - len(two)), kind="stable")
     return FlatRows(
         start, np.frombuffer(adj, dtype=np.int32), rows[order], distinct[order], matched
     )
+
+
+def _set_keeps_order(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Whether ``tuple({a, b})`` is ``(a, b)``, for each pair of distinct non-negative ints.
+
+    A two-element set lists its members by their slots in a table of 8:
+    ``a`` sits at ``a & 7``; ``b`` at ``b & 7`` unless that is taken, then
+    wherever CPython's probe sequence (``i = (5 i + 1 + perturb) & 7``, the
+    perturbation starting at ``b`` and shifted right by 5 each step) first
+    finds free.
+    """
+    slot_a = a & 7
+    slot_b = b & 7
+    perturb = b.copy()
+    pending = slot_b == slot_a
+    while pending.any():
+        perturb[pending] >>= 5
+        slot_b[pending] = (slot_b[pending] * 5 + 1 + perturb[pending]) & 7
+        pending &= slot_b == slot_a
+    return slot_a < slot_b
 
 
 def _dependency_edges_flat(rows: FlatRows) -> tuple[np.ndarray, np.ndarray]:

@@ -241,7 +241,7 @@ def _row_codes(
     another block, -2 past the row's end) and the local number of its
     shared point (pin or P pair), counted in order of first use in the block.
     """
-    kind = np.fromiter(map(_KIND_CODE.__getitem__, system.row_kind), np.int64, len(system.row_kind))
+    kind = system.row_codes()
     begin, end = flat.adj_start[rows], flat.adj_start[rows + 1]
     width = int((end - begin).max(initial=0))
     touched = np.full((len(rows), width), -2, dtype=np.int64)

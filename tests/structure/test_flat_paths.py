@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import random
 
+import numpy as np
 import pytest
 
 import structure.assur as assur_module
@@ -24,7 +25,7 @@ from structure.generators import random_mechanism, random_mechanism_with_groups
 from structure.kinds import PairKind
 from structure.model import Mechanism
 from structure.rigidity.constraints import RowKind, constraint_system
-from structure.rigidity.matching import Matcher
+from structure.rigidity.matching import Matcher, _set_keeps_order
 from structure.rigidity.rank import generic_rank
 
 
@@ -171,3 +172,16 @@ def test_numpy_group_plan_gives_the_plain_plan(index, monkeypatch):
             continue
         plans.append((plan.members, plan.order, list(plan.edges), plan.removed_links))
     assert plans[0] == plans[1]
+
+
+def test_the_order_of_a_set_of_two_ints_is_predicted():
+    rng = random.Random(7)
+    pairs = [
+        (rng.randrange(1 << k), rng.randrange(1 << k)) for k in (3, 6, 12, 24) for _ in range(4000)
+    ]
+    pairs += [(a, a + 8 * d) for a in range(8) for d in range(1, 200)]  # same first slot
+    pairs = [(a, b) for a, b in pairs if a != b]
+    first = np.array([a for a, _ in pairs], dtype=np.int64)
+    second = np.array([b for _, b in pairs], dtype=np.int64)
+    predicted = _set_keeps_order(first, second).tolist()
+    assert predicted == [tuple({a, b}) == (a, b) for a, b in pairs]

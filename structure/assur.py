@@ -30,7 +30,6 @@ True
 from __future__ import annotations
 
 import heapq
-import itertools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -49,7 +48,7 @@ from .rigidity.constraints import (
     constraint_system,
     sketch_realization,
 )
-from .rigidity.matching import NUMPY_ROWS, Assignment, strongly_connected
+from .rigidity.matching import NUMPY_ROWS, Assignment, block_arrays, strongly_connected
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
 from .utils import UnionFind
 from .validation import validated
@@ -545,11 +544,9 @@ def _completing_blocks(
     system: ConstraintSystem, drivers: Sequence[str], blocks: Sequence[Sequence[int]]
 ) -> np.ndarray:
     """The block that completes each moving link (its later unknown's), -1 for a driver."""
-    count = np.fromiter(map(len, blocks), np.int64, len(blocks))
+    units, block_start = block_arrays(blocks)
     block_of = np.empty(system.n_unknowns, dtype=np.int64)
-    block_of[np.fromiter(itertools.chain.from_iterable(blocks), np.int64, int(count.sum()))] = (
-        np.repeat(np.arange(len(blocks)), count)
-    )
+    block_of[units] = np.repeat(np.arange(len(blocks)), np.diff(block_start))
     n = len(system.links)
     start = np.maximum(block_of[0 : 2 * n : 2], block_of[1 : 2 * n : 2])
     driver_set = set(drivers)

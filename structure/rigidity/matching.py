@@ -20,6 +20,7 @@ algorithms", SIAM J. Comput. 1 (1972).
 
 from __future__ import annotations
 
+import itertools
 from array import array
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -308,9 +309,64 @@ def irreducible_blocks(
     >>> irreducible_blocks([(0,), (0, 1), (1, 2), (2, 1)], [[0], [1], [2], [1]], 3)
     [[0], [1, 2]]
     """
-    edges = _dependency_edges(adj, assigned) if flat is None else _dependency_edges_flat(flat)
-    start, flat = _adjacency_arrays(*edges, n_unknowns)
-    return _strongly_connected(start, flat, n_unknowns)
+    if flat is None:
+        start, successors = _adjacency_arrays(*_dependency_edges(adj, assigned), n_unknowns)
+        return _strongly_connected(start, successors, n_unknowns)
+    start, successors = _adjacency_arrays(*_dependency_edges_flat(flat), n_unknowns)
+    return Blocks.of(_strongly_connected(start, successors, n_unknowns))
+
+
+class Blocks(Sequence):
+    """Irreducible blocks held in two flat arrays: ``blocks[b]`` is a sorted list of unknowns.
+
+    ``units[start[b]:start[b + 1]]`` are block ``b``'s unknowns. A large
+    mechanism has hundreds of thousands of blocks: a list per block (and an
+    int object per unknown) would cost ten times the memory.
+    """
+
+    __slots__ = ("start", "units")
+
+    def __init__(self, units: array, start: array):
+        self.units, self.start = units, start
+
+    @classmethod
+    def of(cls, blocks: Sequence[Sequence[int]]) -> Blocks:
+        """The blocks of a list of lists."""
+        units = array("i", itertools.chain.from_iterable(blocks))
+        return cls(units, array("q", itertools.accumulate(map(len, blocks), initial=0)))
+
+    def __len__(self) -> int:
+        return len(self.start) - 1
+
+    def __getitem__(self, b):  # type: ignore[override]
+        if isinstance(b, slice):
+            return [self[i] for i in range(*b.indices(len(self)))]
+        if b < 0:
+            b += len(self)
+        if not 0 <= b < len(self):
+            raise IndexError(b)
+        return self.units[self.start[b] : self.start[b + 1]].tolist()
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Sequence) and list(self) == [list(x) for x in other]
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"Blocks({list(self)!r})"
+
+
+def block_arrays(blocks: Sequence[Sequence[int]]) -> tuple[np.ndarray, np.ndarray]:
+    """``(units, start)``: the blocks' unknowns one after another, and where each block starts."""
+    if isinstance(blocks, Blocks):
+        return (
+            np.frombuffer(blocks.units, dtype=np.int32).astype(np.int64),
+            np.frombuffer(blocks.start, dtype=np.int64),
+        )
+    count = np.fromiter(map(len, blocks), np.int64, len(blocks))
+    start = np.zeros(len(blocks) + 1, dtype=np.int64)
+    np.cumsum(count, out=start[1:])
+    return np.fromiter(itertools.chain.from_iterable(blocks), np.int64, int(start[-1])), start
 
 
 #: from this many rows on, the rows are also held as flat numpy arrays (:class:`FlatRows`)

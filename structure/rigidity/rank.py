@@ -39,7 +39,15 @@ from .constraints import (
     random_realization,
     row_entries,
 )
-from .matching import NUMPY_ROWS, Assignment, FlatRows, Matcher, flat_rows, irreducible_blocks
+from .matching import (
+    NUMPY_ROWS,
+    Assignment,
+    FlatRows,
+    Matcher,
+    block_arrays,
+    flat_rows,
+    irreducible_blocks,
+)
 
 __all__ = [
     "DENSE_LIMIT",
@@ -87,7 +95,7 @@ class RankAnalysis:
     rank: int
     dof: int
     free: list[tuple[int, int]]
-    blocks: list[list[int]] | None
+    blocks: Sequence[Sequence[int]] | None
     assigned: Sequence[Sequence[int]] = field(repr=False)
     method: str
 
@@ -202,10 +210,8 @@ class _BlockLayout:
     @classmethod
     def of(cls, system: ConstraintSystem, blocks: list[list[int]], flat: FlatRows) -> _BlockLayout:
         n_blocks = len(blocks)
-        unit_count = np.fromiter(map(len, blocks), np.int64, n_blocks)
-        unit_start = np.zeros(n_blocks + 1, dtype=np.int64)
-        np.cumsum(unit_count, out=unit_start[1:])
-        units = np.fromiter(itertools.chain.from_iterable(blocks), np.int64, int(unit_start[-1]))
+        units, unit_start = block_arrays(blocks)
+        unit_count = np.diff(unit_start)
         block_of = np.empty(system.n_unknowns, dtype=np.int64)
         block_of[units] = np.repeat(np.arange(n_blocks), unit_count)
         local = np.empty(system.n_unknowns, dtype=np.int64)

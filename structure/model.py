@@ -27,11 +27,15 @@ from __future__ import annotations
 
 import math
 import operator
+from array import array
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import InitVar, dataclass, field
 from functools import cached_property
+from itertools import chain
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
+
+import numpy as np
 
 from .errors import EdgeListError, EdgeListProblem, StatementError
 from .kinds import LoadKind, PairKind
@@ -74,6 +78,24 @@ def number_text(value: float) -> str:
     return text[:-2] if text.endswith(".0") else text
 
 
+#: the options of a pair other than its slide angle, in the order of :class:`Pair`'s fields,
+#: with their defaults: most pairs of a large file have none of them (see :class:`Pair`)
+_RARE_OPTIONS = (
+    ("flat", None),
+    ("roller", None),
+    ("centers", None),
+    ("normal_deg", None),
+    ("span", None),
+    ("friction", None),
+    ("circle", None),
+    ("gear", False),
+    ("teeth", None),
+    ("internal", None),
+    ("module", None),
+)
+_NO_RARE_OPTIONS = tuple(default for _, default in _RARE_OPTIONS)
+
+
 @dataclass(frozen=True, slots=True)
 class Pair:
     """One kinematic pair between links ``a`` and ``b``.
@@ -113,6 +135,15 @@ class Pair:
         (``normal`` gives it in radians).
     line_no : int
         Line of the description it came from (0 when built in Python).
+
+    Notes
+    -----
+    A large file is mostly pairs with no option but the slide angle, so the
+    record stores ``id``, ``kind``, ``a``, ``b``, ``point``, ``angle_deg``,
+    ``line_no`` and one field for all the other options (None when none is
+    given: 96 bytes a pair instead of 176, issue 11). Those options are still
+    parameters of the constructor and of :func:`dataclasses.replace`, read as
+    attributes, and compared and hashed as before.
     """
 
     id: int
@@ -121,18 +152,38 @@ class Pair:
     b: str
     point: str | None = None
     angle_deg: float | None = None
-    flat: str | None = None
-    roller: str | None = None
-    centers: tuple[str | None, str | None] | None = None
-    normal_deg: float | None = None
+    flat: InitVar[str | None] = None
+    roller: InitVar[str | None] = None
+    centers: InitVar[tuple[str | None, str | None] | None] = None
+    normal_deg: InitVar[float | None] = None
     line_no: int = field(default=0, compare=False)
-    span: float | None = None
-    friction: float | None = None
-    circle: float | None = None
-    gear: bool = False
-    teeth: tuple[int | None, int | None] | None = None
-    internal: str | None = None
-    module: float | None = None
+    span: InitVar[float | None] = None
+    friction: InitVar[float | None] = None
+    circle: InitVar[float | None] = None
+    gear: InitVar[bool] = False
+    teeth: InitVar[tuple[int | None, int | None] | None] = None
+    internal: InitVar[str | None] = None
+    module: InitVar[float | None] = None
+    #: the options of :data:`_RARE_OPTIONS` in that order, or None when all are defaults
+    _rare_options: tuple[Any, ...] | None = field(init=False, repr=False)
+
+    def __post_init__(
+        self,
+        flat: str | None,
+        roller: str | None,
+        centers: tuple[str | None, str | None] | None,
+        normal_deg: float | None,
+        span: float | None,
+        friction: float | None,
+        circle: float | None,
+        gear: bool,
+        teeth: tuple[int | None, int | None] | None,
+        internal: str | None,
+        module: float | None,
+    ) -> None:
+        rare = (flat, roller, centers, normal_deg, span, friction, circle, gear, teeth,
+                internal, module)
+        object.__setattr__(self, "_rare_options", None if rare == _NO_RARE_OPTIONS else rare)
 
     @property
     def angle(self) -> float | None:
@@ -197,6 +248,25 @@ class Pair:
 
     def __repr__(self) -> str:
         return f"Pair({self.id}, {self.label!r})"
+
+
+def _rare_option(position: int, name: str, default: Any) -> property:
+    """The property that reads option ``name`` of a :class:`Pair` from its ``_rare_options``."""
+
+    def read(pair: Pair) -> Any:
+        rare = pair._rare_options
+        return default if rare is None else rare[position]
+
+    read.__name__ = name
+    read.__doc__ = f"The pair's ``{name}`` ({default} when not given)."
+    return property(read)
+
+
+# set after the class is made: a dataclass takes a class attribute of a parameter's name
+# for its default, and these parameters are InitVars whose values the properties read
+for _position, (_name, _default) in enumerate(_RARE_OPTIONS):
+    setattr(Pair, _name, _rare_option(_position, _name, _default))
+del _position, _name, _default
 
 
 @dataclass(frozen=True, slots=True)
@@ -503,20 +573,16 @@ class Mechanism:
     shared_hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
     _by_id: dict[int, Pair] = field(init=False, repr=False, compare=False)
-    _by_link: dict[str, tuple[Pair, ...]] = field(init=False, repr=False, compare=False)
+    _links: _LinkIndex = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # one record per pair, no more: a large file's memory is its pairs (issue 11)
         object.__setattr__(self, "points", MappingProxyType(dict(self.points)))
         pairs = self.pairs
-        by_link: dict[str, list[Pair]] = {self.ground: []}
-        for p in pairs:
-            by_link.setdefault(p.a, []).append(p)
-            by_link.setdefault(p.b, []).append(p)
-        object.__setattr__(self, "links", tuple(by_link))
-        object.__setattr__(self, "_by_link", {k: tuple(v) for k, v in by_link.items()})
-        del by_link
-        in_place = all(p.id == k for k, p in enumerate(pairs, start=1))
+        index = _link_index(pairs, self.ground)
+        object.__setattr__(self, "_links", index)
+        object.__setattr__(self, "links", index.links)
+        in_place = all(map(operator.eq, map(_PAIR_ID, pairs), range(1, len(pairs) + 1)))
         object.__setattr__(self, "_by_id", {} if in_place else {p.id: p for p in pairs})
         shared = _shared_hinges(pairs)
         object.__setattr__(self, "shared_hinges", shared)
@@ -611,26 +677,18 @@ class Mechanism:
 
     def has_link(self, link: str) -> bool:
         """True when ``link`` is a link of the mechanism (the ground included)."""
-        return link in self._by_link
+        return link in self._links.number
 
     def joined(self, a: str, b: str) -> bool:
         """True when some pair joins links ``a`` and ``b``, or they share a compound hinge."""
-        if any(p.other(a) == b for p in self._by_link.get(a, ())):
+        if any(p.other(a) == b for p in self.pairs_of(a)):
             return True
         return any(a in h.links and b in h.links for h in self.compound_hinges.values())
 
     def connected_to_ground(self) -> set[str]:
         """The links reachable from the ground through pairs."""
-        seen = {self.ground}
-        stack = [self.ground]
-        while stack:
-            link = stack.pop()
-            for p in self._by_link.get(link, ()):
-                other = p.other(link)
-                if other not in seen:
-                    seen.add(other)
-                    stack.append(other)
-        return seen
+        reached = _reached(self._links, self._links.number[self.ground])
+        return {link for link, hit in zip(self.links, reached, strict=True) if hit}
 
     def ground_joint(self, link: str) -> GroundJoint | None:
         """How ``link`` is jointed to the ground: an R pivot first, else a P slide, else None.
@@ -644,7 +702,7 @@ class Mechanism:
         >>> m.ground_joint("1").point, m.ground_joint("2").kind.value, m.ground_joint("9")
         ('A', 'P', None)
         """
-        to_ground = [p for p in self._by_link.get(link, ()) if p.other(link) == self.ground]
+        to_ground = [p for p in self.pairs_of(link) if p.other(link) == self.ground]
         pin = next((p for p in to_ground if p.kind is PairKind.R), None)
         if pin is not None:
             return GroundJoint(PairKind.R, pin, pin.point)
@@ -666,7 +724,11 @@ class Mechanism:
 
     def pairs_of(self, link: str) -> Iterator[Pair]:
         """The pairs that touch ``link``, in file order."""
-        return iter(self._by_link.get(link, ()))
+        index = self._links
+        k = index.number.get(link)
+        if k is None:
+            return iter(())
+        return iter(index.incident[index.offsets[k] : index.offsets[k + 1]])
 
     def pair(self, pair_id: int) -> Pair:
         """The pair with id ``pair_id``."""
@@ -696,6 +758,64 @@ class Mechanism:
     def __repr__(self) -> str:
         title = f" {self.name!r}" if self.name else ""
         return f"<Mechanism{title}: {len(self.moving_links)} moving links, {len(self.pairs)} pairs>"
+
+
+_PAIR_ID = operator.attrgetter("id")
+_PAIR_ENDS = operator.attrgetter("a", "b")
+
+
+@dataclass(frozen=True, slots=True)
+class _LinkIndex:
+    """The pairs of each link, as flat tables over link numbers (issue 11).
+
+    ``links`` are the link names, the ground first, then in order of first
+    appearance; ``number`` maps a name to its position there. The pairs that
+    touch link ``k`` are ``incident[offsets[k]:offsets[k + 1]]`` in file
+    order (a pair once at each of its ends), and ``neighbours`` holds, at
+    the same places, the number of the link at each pair's other end. One
+    tuple and two arrays instead of a tuple of pairs per link.
+    """
+
+    links: tuple[str, ...]
+    number: dict[str, int]
+    offsets: array
+    incident: tuple[Pair, ...]
+    neighbours: array
+
+
+def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
+    """Number the links and group the pairs' ends by link, in bulk (no loop per pair)."""
+    ends = list(chain.from_iterable(map(_PAIR_ENDS, pairs)))  # a, b of each pair in turn
+    links = tuple(dict.fromkeys(chain((ground,), ends)))
+    number = dict(zip(links, range(len(links)), strict=True))
+    end_link = np.fromiter(map(number.__getitem__, ends), dtype=np.int64, count=len(ends))
+    order = np.argsort(end_link, kind="stable")  # the ends by link, each link's in file order
+    offsets = np.zeros(len(links) + 1, dtype=np.int64)
+    np.cumsum(np.bincount(end_link, minlength=len(links)), out=offsets[1:])
+    incident = tuple(map(pairs.__getitem__, (order // 2).tolist()))
+    neighbours = end_link[order ^ 1].astype(np.int32)  # the other end of the same pair
+    return _LinkIndex(
+        links,
+        number,
+        array("i", offsets.astype(np.int32).tobytes()),
+        incident,
+        array("i", neighbours.tobytes()),
+    )
+
+
+def _reached(index: _LinkIndex, start: int) -> bytearray:
+    """A flag per link number: 1 for the links reachable from link ``start`` through pairs."""
+    offsets, neighbours = index.offsets, index.neighbours
+    seen = bytearray(len(index.links))
+    seen[start] = 1
+    stack = [start]
+    while stack:
+        k = stack.pop()
+        for other in neighbours[offsets[k] : offsets[k + 1]]:
+            if not seen[other]:
+                seen[other] = 1
+                stack.append(other)
+    return seen
 
 
 def _shared_hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:

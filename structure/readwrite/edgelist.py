@@ -220,17 +220,17 @@ def _pair(tokens: list[str], pair_id: int, line_no: int, names: dict[str, str]) 
     a = names.setdefault(tokens[0], tokens[0])
     b = names.setdefault(tokens[1], tokens[1])
     if size == 3:
-        return Pair(pair_id, kind, a, b, line_no=line_no)
+        return Pair.plain(pair_id, kind, a, b, line_no=line_no)
     point = tokens[3]
     if "=" in point or point == "gear":
         return _pair_with_options(tokens, pair_id, line_no, names)
     point = names.setdefault(point, point)
     if size == 4:
-        return Pair(pair_id, kind, a, b, point, line_no=line_no)
+        return Pair.plain(pair_id, kind, a, b, point, line_no=line_no)
     angle = _slide_angle(tokens[4]) if kind is PairKind.P else None
     if angle is None:
         return _pair_with_options(tokens, pair_id, line_no, names)
-    return Pair(pair_id, kind, a, b, point, angle, line_no=line_no)
+    return Pair.plain(pair_id, kind, a, b, point, angle, line_no)
 
 
 def _slide_angle(token: str) -> float | None:

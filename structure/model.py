@@ -31,7 +31,6 @@ from array import array
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import InitVar, dataclass, field
 from functools import cached_property
-from itertools import chain
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
@@ -791,7 +790,7 @@ class Mechanism:
         k = index.number.get(link)
         if k is None:
             return iter(())
-        return iter(index.incident[index.offsets[k] : index.offsets[k + 1]])
+        return map(self.pairs.__getitem__, index.incident[index.offsets[k] : index.offsets[k + 1]])
 
     def pair(self, pair_id: int) -> Pair:
         """The pair with id ``pair_id``."""
@@ -824,7 +823,6 @@ class Mechanism:
 
 
 _PAIR_ID = operator.attrgetter("id")
-_PAIR_ENDS = operator.attrgetter("a", "b")
 
 
 @dataclass(frozen=True, slots=True)
@@ -832,37 +830,39 @@ class _LinkIndex:
     """The pairs of each link, as flat tables over link numbers (issue 11).
 
     ``links`` are the link names, the ground first, then in order of first
-    appearance; ``number`` maps a name to its position there. The pairs that
-    touch link ``k`` are ``incident[offsets[k]:offsets[k + 1]]`` in file
-    order (a pair once at each of its ends), and ``neighbours`` holds, at
-    the same places, the number of the link at each pair's other end. One
-    tuple and two arrays instead of a tuple of pairs per link.
+    appearance; ``number`` maps a name to its position there. The positions
+    in the mechanism's ``pairs`` of the pairs that touch link ``k`` are
+    ``incident[offsets[k]:offsets[k + 1]]``, in file order (a pair once at
+    each of its ends), and ``neighbours`` holds, at the same places, the
+    number of the link at the pair's other end: three arrays of 4-byte
+    numbers instead of a tuple of pairs per link.
     """
 
     links: tuple[str, ...]
     number: dict[str, int]
     offsets: array
-    incident: tuple[Pair, ...]
+    incident: array
     neighbours: array
 
 
 def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
-    """Number the links and group the pairs' ends by link, in bulk (no loop per pair)."""
-    ends = list(chain.from_iterable(map(_PAIR_ENDS, pairs)))  # a, b of each pair in turn
-    links = tuple(dict.fromkeys(chain((ground,), ends)))
-    number = dict(zip(links, range(len(links)), strict=True))
-    end_link = np.fromiter(map(number.__getitem__, ends), dtype=np.int64, count=len(ends))
+    """Number the links in one pass over the pairs, then group the pairs' ends by link."""
+    number = {ground: 0}
+    ends = array("i")  # the link numbers of a, b of each pair in turn
+    add_end, numbered = ends.append, number.setdefault
+    for p in pairs:
+        add_end(numbered(p.a, len(number)))
+        add_end(numbered(p.b, len(number)))
+    end_link = np.frombuffer(ends, dtype=np.intc)
     order = np.argsort(end_link, kind="stable")  # the ends by link, each link's in file order
-    offsets = np.zeros(len(links) + 1, dtype=np.int64)
-    np.cumsum(np.bincount(end_link, minlength=len(links)), out=offsets[1:])
-    incident = tuple(map(pairs.__getitem__, (order // 2).tolist()))
-    neighbours = end_link[order ^ 1].astype(np.int32)  # the other end of the same pair
+    offsets = np.zeros(len(number) + 1, dtype=np.intc)
+    np.cumsum(np.bincount(end_link, minlength=len(number)), out=offsets[1:])
     return _LinkIndex(
-        links,
+        tuple(number),
         number,
-        array("i", offsets.astype(np.int32).tobytes()),
-        incident,
-        array("i", neighbours.tobytes()),
+        array("i", offsets.tobytes()),
+        array("i", (order // 2).astype(np.intc).tobytes()),
+        array("i", end_link[order ^ 1].tobytes()),  # the other end of the same pair
     )
 
 

@@ -113,8 +113,12 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
     found = _Statements()
     pairs = found.pairs
     names = found.names
+    # pair k's id is the int that numbers line k (k is at most its own line): a large file
+    # then keeps one int a line, not two a pair (issue 11)
+    line_numbers: list[int] = []
     for line_no, raw in enumerate(lines, start=1):
-        text = raw.split("#", 1)[0]
+        line_numbers.append(line_no)
+        text = raw.split("#", 1)[0] if "#" in raw else raw
         tokens = text.split()
         if not tokens:
             continue
@@ -125,7 +129,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
             if head == "name":
                 found.name = text.strip()[4:].strip()
             elif head not in _STATEMENTS or (len(tokens) >= 3 and tokens[2] in _PAIR_LETTERS):
-                pairs.append(_pair(tokens, len(pairs) + 1, line_no, names))
+                pairs.append(_pair(tokens, line_numbers[len(pairs)], line_no, names))
             else:
                 found.read_statement(tokens, line_no)
         except StatementError as exc:

@@ -29,7 +29,7 @@ import math
 import operator
 from array import array
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import InitVar, dataclass, field
+from dataclasses import FrozenInstanceError, InitVar, dataclass, field
 from functools import cached_property
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
@@ -187,7 +187,8 @@ class Pair:
         internal: str | None = None,
         module: float | None = None,
     ) -> None:
-        # the dataclass's own __init__, written out: see _fill_pair
+        # the dataclass's own __init__ written out, faster (see _fill_pair); the options but
+        # the angle go to one field, None for the many pairs that have none
         rare = (flat, roller, centers, normal_deg, span, friction, circle, gear, teeth,
                 internal, module)
         rare_options = None if rare == _NO_RARE_OPTIONS else rare
@@ -295,6 +296,27 @@ def _rare_option(position: int, name: str, default: Any) -> property:
 for _position, (_name, _default) in enumerate(_RARE_OPTIONS):
     setattr(Pair, _name, _rare_option(_position, _name, _default))
 del _position, _name, _default
+
+_RARE_NAMES = frozenset(name for name, _ in _RARE_OPTIONS)
+_FIELDS_SETATTR, _FIELDS_DELATTR = Pair.__setattr__, Pair.__delattr__
+
+
+def _frozen_setattr(pair: Pair, name: str, value: Any) -> None:
+    """Refuse to set an option read through a property, as the frozen fields are refused."""
+    if name in _RARE_NAMES:
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+    _FIELDS_SETATTR(pair, name, value)
+
+
+def _frozen_delattr(pair: Pair, name: str) -> None:
+    """Refuse to delete an option read through a property, as the frozen fields are refused."""
+    if name in _RARE_NAMES:
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
+    _FIELDS_DELATTR(pair, name)
+
+
+Pair.__setattr__ = _frozen_setattr  # type: ignore[method-assign]
+Pair.__delattr__ = _frozen_delattr  # type: ignore[method-assign]
 
 #: the setters of the slots of :class:`Pair`, in the order :func:`_fill_pair` unpacks them
 _PAIR_SETTERS = tuple(

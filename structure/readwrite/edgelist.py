@@ -86,7 +86,6 @@ __all__ = [
 
 #: the words that start a statement other than a pair (``name`` starts a title)
 _STATEMENTS = frozenset(("ground", "driver", "point", *(k.value for k in LoadKind)))
-_PAIR_LETTERS = frozenset(k.value for k in PairKind)
 _KIND_OF = {k.value: k for k in PairKind}
 
 
@@ -128,7 +127,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
             # name (no statement has R, P or H third); a `name` line is always a title
             if head == "name":
                 found.name = text.strip()[4:].strip()
-            elif head not in _STATEMENTS or (len(tokens) >= 3 and tokens[2] in _PAIR_LETTERS):
+            elif head not in _STATEMENTS or (len(tokens) >= 3 and tokens[2] in _KIND_OF):
                 pairs.append(_pair(tokens, line_numbers[len(pairs)], line_no, names))
             else:
                 found.read_statement(tokens, line_no)
@@ -249,7 +248,13 @@ def _slide_angle(token: str) -> float | None:
 def _pair_with_options(
     tokens: list[str], pair_id: int, line_no: int, names: dict[str, str]
 ) -> Pair:
-    """The grammar of any pair line; the checks of its content are :func:`make_pair`'s."""
+    """The grammar of any pair line; the checks of its content are :func:`make_pair`'s.
+
+    Raises
+    ------
+    StatementError
+        The first problem of the line, read from the left.
+    """
     if len(tokens) < 3:
         raise StatementError("a pair needs at least 'a b KIND'")
     a = names.setdefault(tokens[0], tokens[0])

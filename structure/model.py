@@ -812,7 +812,7 @@ class Mechanism:
         k = index.number.get(link)
         if k is None:
             return iter(())
-        return map(self.pairs.__getitem__, index.incident[index.offsets[k] : index.offsets[k + 1]])
+        return iter(index.incident[index.offsets[k] : index.offsets[k + 1]])
 
     def pair(self, pair_id: int) -> Pair:
         """The pair with id ``pair_id``."""
@@ -852,19 +852,18 @@ class _LinkIndex:
     """The pairs of each link, as flat tables over link numbers (issue 11).
 
     ``links`` are the link names, the ground first, then in order of first
-    appearance; ``number`` maps a name to its position there. The positions
-    in the mechanism's ``pairs`` of the pairs that touch link ``k`` are
-    ``incident[offsets[k]:offsets[k + 1]]``, in file order (a pair once at
-    each of its ends), and ``neighbours`` holds, at the same places, the
-    number of the link at the pair's other end: three arrays of 4-byte
-    numbers instead of a tuple of pairs per link.
+    appearance; ``number`` maps a name to its position there. The pairs that
+    touch link ``k`` are ``incident[offsets[k]:offsets[k + 1]]``, in file
+    order (a pair once at each of its ends), and ``neighbours`` holds, at
+    the same places, the number of the link at the pair's other end: one
+    tuple and two arrays of 4-byte numbers instead of a tuple per link.
     """
 
     links: tuple[str, ...]
     number: dict[str, int]
-    offsets: array
-    incident: array
-    neighbours: array
+    offsets: array[int]
+    incident: tuple[Pair, ...]
+    neighbours: array[int]
 
 
 def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
@@ -879,11 +878,13 @@ def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
     order = np.argsort(end_link, kind="stable")  # the ends by link, each link's in file order
     offsets = np.zeros(len(number) + 1, dtype=np.intc)
     np.cumsum(np.bincount(end_link, minlength=len(number)), out=offsets[1:])
+    records = np.empty(len(pairs), dtype=object)
+    records[:] = pairs
     return _LinkIndex(
         tuple(number),
         number,
         array("i", offsets.tobytes()),
-        array("i", (order // 2).astype(np.intc).tobytes()),
+        tuple(records[order // 2].tolist()),
         array("i", end_link[order ^ 1].tobytes()),  # the other end of the same pair
     )
 

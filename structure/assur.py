@@ -30,7 +30,8 @@ True
 from __future__ import annotations
 
 import heapq
-from collections.abc import Mapping, Sequence
+from array import array
+from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from operator import attrgetter
@@ -309,7 +310,7 @@ class GroupPlan:
     drivers: tuple[str, ...]
     members: Mapping[int, list[str]]
     order: Sequence[int]
-    edges: set[tuple[int, int]]
+    edges: Collection[tuple[int, int]]
     removed_links: tuple[str, ...]
     removed_pairs: tuple[int, ...]
 
@@ -432,7 +433,7 @@ def _merged_blocks_by_numpy(
     assert blocks is not None
     rows = _PairRows.of(system, analysis.assigned)
     start = _completing_blocks(system, drivers, blocks)
-    merged = UnionFind(start[start >= 0].tolist())
+    merged = UnionFind()  # only blocks that merge enter it: the others are their own roots
     owner = _block_owners(system, rows, start, merged)
     _merge_split_pairs(system, rows, owner, merged)
     nodes, edges, root, ascending = _merge_cycles(rows, owner, merged, start)
@@ -532,7 +533,7 @@ class _PairRows:
                 units[r, : len(got)] = got
         pin = system.row_codes()[:n] == _PIN_CODE
         return cls(
-            units.astype(np.int64),
+            units.astype(np.int32),
             pin,
             np.frombuffer(system.row_pair, dtype=np.int32)[:n].astype(np.int64),
             np.frombuffer(system.adj_start, dtype=np.int64)[: n + 1],
@@ -628,17 +629,18 @@ def _merge_cycles(
     n_blocks = int(start.max(initial=-1)) + 1
     linked = np.flatnonzero(start >= 0)
     while True:
-        root = np.full(n_blocks, -1, dtype=np.int64)
+        root = np.full(n_blocks, -1, dtype=np.int32)
+        root[start[linked]] = start[linked]
         members = list(merged)
         root[members] = [merged[b] for b in members]
-        merged_owner = np.where(owner >= 0, root[np.maximum(owner, 0)], -1)
+        merged_owner = np.where(owner >= 0, root[np.maximum(owner, 0)], -1).astype(np.int32)
         sources, targets = _block_dependencies(rows, merged_owner)
         nodes = np.sort(root[root >= 0])
         nodes = nodes[np.r_[True, nodes[1:] != nodes[:-1]][: len(nodes)]]
         first_link = np.full(n_blocks, len(start), dtype=np.int64)
         np.minimum.at(first_link, root[start[linked]], linked)
         if bool((first_link[sources] < first_link[targets]).all()):
-            edges = set(zip(sources.tolist(), targets.tolist(), strict=True))
+            edges = Dependencies.of(set(zip(sources.tolist(), targets.tolist(), strict=True)))
             return nodes.tolist(), edges, root, True
         edges = set(zip(sources.tolist(), targets.tolist(), strict=True))
         # strongly connected components of the group graph (nodes numbered in order,
@@ -649,9 +651,41 @@ def _merge_cycles(
         cycles = [c for c in components if len(c) > 1]
         del components
         if not cycles:
-            return nodes.tolist(), edges, root, False
+            return nodes.tolist(), Dependencies.of(edges), root, False
         for c in cycles:
             merged.union(*(int(nodes[i]) for i in c))
+
+
+class Dependencies(Collection):
+    """Dependencies ``(source, target)`` between merged blocks, in a fixed order, held flat.
+
+    Two arrays in the order of the set they were made from (which is the
+    order the groups' DAG lists them in): a large mechanism has about a
+    hundred thousand of them, and a set of tuples costs ten times the memory.
+    """
+
+    __slots__ = ("sources", "targets")
+
+    def __init__(self, sources: array, targets: array):
+        self.sources, self.targets = sources, targets
+
+    @classmethod
+    def of(cls, edges: Iterable[tuple[int, int]]) -> Dependencies:
+        """The ``edges`` in their iteration order."""
+        sources, targets = array("i"), array("i")
+        for u, v in edges:
+            sources.append(u)
+            targets.append(v)
+        return cls(sources, targets)
+
+    def __iter__(self) -> Iterator[tuple[int, int]]:
+        return zip(self.sources, self.targets, strict=True)
+
+    def __len__(self) -> int:
+        return len(self.sources)
+
+    def __contains__(self, edge: object) -> bool:
+        return edge in set(self)
 
 
 def _numbered_edges(
@@ -670,9 +704,8 @@ def _block_dependencies(rows: _PairRows, merged_owner: np.ndarray) -> tuple[np.n
     included), so a set made of them is the one a loop over the rows makes.
     """
     first = rows.units[:, 0]
-    counts = np.diff(rows.adj_start)
-    row_of = np.repeat(np.arange(len(first)), counts)
-    target = np.where(first >= 0, merged_owner[np.maximum(first, 0)], -1)[row_of]
+    target = np.where(first >= 0, merged_owner[np.maximum(first, 0)], -1).astype(np.int32)
+    target = np.repeat(target, np.diff(rows.adj_start))
     source = merged_owner[rows.adj[rows.adj_start[0] : rows.adj_start[-1]]]
     keep = (target >= 0) & (source >= 0) & (source != target)
     return source[keep], target[keep]

@@ -349,13 +349,14 @@ def _system_by_numpy(
     """The pair rows laid out by numpy (a large mechanism's): one column per field."""
     rows = _pair_rows(mechanism, number)
     count = len(pins.key)
-    pin_adj = np.full((count, 4), -1, dtype=np.int64)
+    pin_adj = np.full((count, 4), -1, dtype=np.int32)
     for k, adj in enumerate(pins.adj):
         pin_adj[k, : len(adj)] = adj
     order = np.argsort(
         np.concatenate([rows.key, np.array(pins.key, dtype=np.int64)]), kind="stable"
     )
     touched = np.concatenate([rows.adj, pin_adj])[order]
+    del pin_adj
     present = touched >= 0
     adj_start = np.zeros(len(order) + 1, dtype=np.int64)
     np.cumsum(present.sum(axis=1), out=adj_start[1:])
@@ -363,8 +364,8 @@ def _system_by_numpy(
     row_link = [""] * len(order)
     for position in np.flatnonzero(order >= len(rows.key)).tolist():
         row_link[position] = pins.links[int(order[position]) - len(rows.key)]
-    sizes = np.concatenate([rows.size, np.full(count, 2, dtype=np.int64)])
-    pairs = np.concatenate([rows.pair, np.array(pins.pair, dtype=np.int64)])
+    sizes = np.concatenate([rows.size, np.full(count, 2, dtype=np.int8)])
+    pairs = np.concatenate([rows.pair, np.array(pins.pair, dtype=np.int32)])
     return ConstraintSystem(
         mechanism,
         links,
@@ -383,7 +384,7 @@ def _as_array(typecode: str, values: np.ndarray) -> array:
     """``values`` as a flat :class:`array.array` of ``typecode`` (indexing it gives Python ints)."""
     out = array(typecode)
     dtype = {"b": np.int8, "i": np.int32, "q": np.int64}[typecode]
-    out.frombytes(np.ascontiguousarray(values, dtype=dtype).tobytes())
+    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=dtype)).cast("B"))
     return out
 
 
@@ -421,17 +422,24 @@ def _pair_rows(mechanism: Mechanism, number: Mapping[str, int]) -> _Rows:
     if compound:
         at_pin = np.fromiter(map(compound.__contains__, map(attrgetter("point"), pairs)), bool, n)
         kind[at_pin & (kind == 0)] = 3
-    a = np.fromiter(map(number.__getitem__, map(attrgetter("a"), pairs)), np.int64, n)
-    b = np.fromiter(map(number.__getitem__, map(attrgetter("b"), pairs)), np.int64, n)
-    ids = np.fromiter(map(attrgetter("id"), pairs), np.int64, n)
+    a = np.fromiter(map(number.__getitem__, map(attrgetter("a"), pairs)), np.int32, n)
+    b = np.fromiter(map(number.__getitem__, map(attrgetter("b"), pairs)), np.int32, n)
+    ids = np.fromiter(map(attrgetter("id"), pairs), np.int32, n)
     hi, lo = np.maximum(a, b), np.minimum(a, b)
-    both = np.column_stack([2 * hi + 1, 2 * hi, 2 * lo + 1, 2 * lo])
-    both[lo < 0, 2:] = -1
-    angles = np.full((n, 4), -1, dtype=np.int64)
-    angles[:, 0], angles[:, 1] = 2 * hi + 1, np.where(lo < 0, -1, 2 * lo + 1)
-    position = np.arange(n, dtype=np.int64) * _ROW_STRIDE
+    del a, b
     plain = np.flatnonzero(kind < 3)  # hinges, contacts and the slide rows of P pairs
     slides = np.flatnonzero(kind == _KIND_OF[_P])
+    # up to four unknowns per row (int32: a large mechanism has 10^5 rows), -1 past the end
+    adj = np.full((len(plain) + len(slides), 4), -1, dtype=np.int32)
+    on_ground = lo < 0
+    adj[: len(plain), 0] = 2 * hi[plain] + 1
+    adj[: len(plain), 1] = 2 * hi[plain]
+    adj[: len(plain), 2] = np.where(on_ground, -1, 2 * lo + 1)[plain]
+    adj[: len(plain), 3] = np.where(on_ground, -1, 2 * lo)[plain]
+    adj[len(plain) :, 0] = 2 * hi[slides] + 1
+    adj[len(plain) :, 1] = np.where(on_ground, -1, 2 * lo + 1)[slides]
+    del hi, lo, on_ground
+    position = np.arange(n, dtype=np.int64) * _ROW_STRIDE
     row_kind = np.array([_CODE[_HINGE], _CODE[_SLIDE], _CODE[_CONTACT]], dtype=np.int8)
     return _Rows(
         key=np.concatenate([position[plain] + (kind[plain] == 1), position[slides]]),
@@ -439,10 +447,10 @@ def _pair_rows(mechanism: Mechanism, number: Mapping[str, int]) -> _Rows:
             [row_kind[kind[plain]], np.full(len(slides), _CODE[_SLIDE_ANGLE], dtype=np.int8)]
         ),
         size=np.concatenate(
-            [np.where(kind[plain] == 0, 2, 1), np.ones(len(slides), dtype=np.int64)]
+            [np.where(kind[plain] == 0, 2, 1).astype(np.int8), np.ones(len(slides), np.int8)]
         ),
         pair=np.concatenate([ids[plain], ids[slides]]),
-        adj=np.concatenate([both[plain], angles[slides]]),
+        adj=adj,
     )
 
 

@@ -401,16 +401,21 @@ def flat_rows(adj_start: array, adj: array, units: array) -> FlatRows:
     taken in the order of a set of them, as :func:`_dependency_edges` does.
     """
     start = np.frombuffer(adj_start, dtype=np.int64)
-    slots = np.frombuffer(units, dtype=np.int32).reshape(-1, 2).astype(np.int64)
+    slots = np.frombuffer(units, dtype=np.int32).reshape(-1, 2)
     first, second = slots[:, 0].copy(), slots[:, 1].copy()
     matched = ((first >= 0).astype(np.int8) + (second >= 0)).astype(np.int8)
     two = np.flatnonzero((second >= 0) & (second != first))
     if len(two):
         swap = ~_set_keeps_order(first[two], second[two])
         first[two[swap]], second[two[swap]] = second[two[swap]], first[two[swap]]
-    rows = np.concatenate([np.flatnonzero(first >= 0), two])
+    rows = np.concatenate([np.flatnonzero(first >= 0), two]).astype(np.int32)
     distinct = np.concatenate([first[first >= 0], second[two]])
-    order = np.argsort(rows * 2 + (np.arange(len(rows)) >= len(rows) - len(two)), kind="stable")
+    del first, second, two
+    # each row's units together, its first before its second
+    order = np.argsort(
+        2 * rows.astype(np.int64) + (np.arange(len(rows)) >= np.count_nonzero(slots[:, 0] >= 0)),
+        kind="stable",
+    )
     return FlatRows(
         start, np.frombuffer(adj, dtype=np.int32), rows[order], distinct[order], matched
     )
@@ -442,7 +447,8 @@ def _dependency_edges_flat(rows: FlatRows) -> tuple[np.ndarray, np.ndarray]:
     counts = rows.adj_start[rows.unit_row + 1] - begin
     total = int(counts.sum())
     # each unit's row's adjacency, one after another
-    at = np.repeat(begin - np.cumsum(counts) + counts, counts) + np.arange(total)
+    at = np.repeat((begin - np.cumsum(counts) + counts).astype(np.int32), counts)
+    at += np.arange(total, dtype=np.int32)
     return rows.adj[at], np.repeat(rows.units, counts)
 
 

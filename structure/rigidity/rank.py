@@ -121,6 +121,8 @@ def _match(system: ConstraintSystem) -> tuple[Matcher, dict[int, int]]:
 
 
 def _probe_system(system: ConstraintSystem, free: list[tuple[int, int]]) -> ConstraintSystem:
+    if not free:  # the usual case: nothing to probe, and no copy of a large system
+        return system
     return system.with_rows(
         [RowKind.PROBE] * len(free), [k for _, k in free], [(u,) for u, _ in free], [""] * len(free)
     )
@@ -212,9 +214,9 @@ class _BlockLayout:
         n_blocks = len(blocks)
         units, unit_start = block_arrays(blocks)
         unit_count = np.diff(unit_start)
-        block_of = np.empty(system.n_unknowns, dtype=np.int64)
+        block_of = np.empty(system.n_unknowns, dtype=np.int32)
         block_of[units] = np.repeat(np.arange(n_blocks), unit_count)
-        local = np.empty(system.n_unknowns, dtype=np.int64)
+        local = np.empty(system.n_unknowns, dtype=np.int32)
         local[units] = np.arange(len(units)) - np.repeat(unit_start[:-1], unit_count)
         # every unit of a row lies in one block: its first unit's tells
         first = np.flatnonzero(np.r_[True, flat.unit_row[1:] != flat.unit_row[:-1]])
@@ -250,20 +252,20 @@ def _row_codes(
     kind = system.row_codes()
     begin, end = flat.adj_start[rows], flat.adj_start[rows + 1]
     width = int((end - begin).max(initial=0))
-    touched = np.full((len(rows), width), -2, dtype=np.int64)
+    touched = np.full((len(rows), width), -2, dtype=np.int32)
     for k in range(width):
         has = begin + k < end
         u = flat.adj[begin[has] + k]
         touched[has, k] = np.where(block_of[u] == row_block[has], local[u], -1)
     shared = _shared_numbers(system, rows, row_block, kind)
-    return np.column_stack([kind[rows], flat.matched[rows], touched, shared])
+    return np.column_stack([kind[rows], flat.matched[rows], touched, shared]).astype(np.int32)
 
 
 def _shared_numbers(
     system: ConstraintSystem, rows: np.ndarray, row_block: np.ndarray, kind: np.ndarray
 ) -> np.ndarray:
     """Each row's shared point (a pin, or its pair) numbered in order of first use in its block."""
-    pair = np.asarray(system.row_pair, dtype=np.int64)[rows]
+    pair = np.frombuffer(system.row_pair, dtype=np.int32)[rows].astype(np.int64)
     key = 2 * pair + 1
     pins = np.flatnonzero(kind[rows] == _KIND_CODE[RowKind.PIN])
     if len(pins):
@@ -551,9 +553,11 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     rank = len(units[: 2 * system.n_pair_rows]) - units[: 2 * system.n_pair_rows].count(-1)
     probed = _probe_system(system, free)
     # each probe row is matched to the free units it fixes
-    assigned = Assignment(
-        units + array("i", itertools.chain.from_iterable((u, u if k == 2 else -1) for u, k in free))
-    )
+    if free:
+        units = units + array(
+            "i", itertools.chain.from_iterable((u, u if k == 2 else -1) for u, k in free)
+        )
+    assigned = Assignment(units)
     del units
     flat = (
         flat_rows(probed.adj_start, probed.adj, assigned.units)

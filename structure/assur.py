@@ -33,6 +33,7 @@ import heapq
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
+from operator import itemgetter
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -575,17 +576,18 @@ def _decomposition(
     level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
     compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
     for b, links in members.items():
+        position = index[b]
         for link in links:
-            level[link] = index[b]
+            level[link] = position
     groups = tuple(
         _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b], compound))
         for b in order
     )
-    successors: list[list[int]] = [[] for _ in groups]
-    for u, v in edges:  # networkx's DiGraph order: by source, then as added
-        successors[index[u]].append(index[v])
-    dag_edges = tuple((u, v) for u, targets in enumerate(successors) for v in targets)
-    return Decomposition(mechanism, tuple(drivers), groups, dag_edges, removed_links, removed_pairs)
+    dag_edges = [(index[u], index[v]) for u, v in edges]
+    dag_edges.sort(key=_source)  # networkx's DiGraph order: by source, then as added (stable)
+    return Decomposition(
+        mechanism, tuple(drivers), groups, tuple(dag_edges), removed_links, removed_pairs
+    )
 
 
 def _topological_order(
@@ -613,25 +615,39 @@ def _topological_order(
 _R = PairKind.R  # enum member lookups are slow in hot loops
 _PIN = RowKind.PIN
 
-_GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]
+_source = itemgetter(0)  # of an edge
+
+_GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], int]
 
 
 def _build_group(links: list[str], found: _GroupPairs) -> AssurGroup:
-    pairs, joints, external_letter, middle_letter = found
+    """The group of ``links`` from its pairs, internal joints and number of external pairs."""
+    pairs, joints, n_external = found
     if 3 * len(links) != 2 * len(pairs):
         raise DecompositionError(
             f"group {','.join(links)} has {len(pairs)} pairs for {len(links)} links "
             "(3·links = 2·pairs fails)",
             links,
         )
-    n_external = sum(1 for p in pairs if p.external)
-    assur_class = classify_group(links, joints)
-    kind: DyadKind | None = None
-    if len(links) == 2:
-        a, b = links
-        letters = external_letter.get(a, "?") + middle_letter + external_letter.get(b, "?")
-        kind = DyadKind.from_letters(letters)
-    return AssurGroup(tuple(links), tuple(pairs), assur_class, n_external, kind)
+    kind = _dyad_kind(links, pairs) if len(links) == 2 else None
+    return AssurGroup(tuple(links), tuple(pairs), classify_group(links, joints), n_external, kind)
+
+
+def _dyad_kind(links: list[str], pairs: list[GroupPair]) -> DyadKind | None:
+    """A dyad's letters read external–middle–external, as its kind (None if no kind fits).
+
+    Each link's letter is its first external pair's, the middle letter the
+    last internal pair's ('?' and '' where there is none).
+    """
+    first, second = links
+    outer = {}
+    middle = ""
+    for p in pairs:
+        if p.external:
+            outer.setdefault(p.links[0], p.kind)
+        else:
+            middle = p.kind
+    return DyadKind.from_letters(outer.get(first, "?") + middle + outer.get(second, "?"))
 
 
 def _group_pairs(
@@ -641,52 +657,75 @@ def _group_pairs(
     level: int,
     compound: Mapping[str, Hinge] | None = None,
 ) -> _GroupPairs:
-    """Pairs of a group known at ``level``: internal joints, external letters, middle letter."""
-    members = set(links)
-    pairs: list[GroupPair] = []
-    joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
-    external_letter: dict[str, str] = {}
-    middle_letter = ""
+    """Pairs of a group known at ``level``, its internal joints and its number of external pairs.
+
+    A pair between two group links is taken from the earlier one (in group
+    order), a pair to a link known before ``level`` as external, the pairs
+    at a compound hinge once, from the first group link at it
+    (:func:`_hinge_pairs`). ``done`` is the level of every link.
+    """
     if compound is None:
         compound = mechanism.compound_hinges
+    position = {x: i for i, x in enumerate(links)}
+    pairs: list[GroupPair] = []
+    joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
+    n_external = 0
     seen_hinges: set[str] = set()
-    seen_pairs: set[int] = set()
-    for link in links:
+    for i, link in enumerate(links):
         for p in mechanism.pairs_of(link):
-            if p.id in seen_pairs:
+            a = p.a
+            other = p.b if link == a else a
+            if compound and p.kind is _R and p.point in compound:
+                if p.point not in seen_hinges:
+                    seen_hinges.add(p.point)
+                    n_external += _hinge_pairs(
+                        compound[p.point], position, done, level, mechanism.ground, pairs, joints
+                    )
                 continue
-            seen_pairs.add(p.id)
-            other = p.other(link)
-            h = compound.get(p.point) if compound and p.kind is _R and p.point else None
-            if h is not None:
-                if h.point in seen_hinges:
-                    continue
-                seen_hinges.add(h.point)
-                inside = [x for x in h.links if x in members]
-                known = [x for x in h.links if x not in members and done[x] < level]
-                for x in inside[1:]:
-                    pairs.append(GroupPair(_R, (inside[0], x), h.point, False))
-                if len(inside) > 1:
-                    joints.append(tuple(inside))
-                    middle_letter = "R"
-                if known:
-                    # the pin is fixed by the earliest known link at it (the ground first)
-                    anchor = min(known, key=lambda x: (done[x], x != mechanism.ground))
-                    pairs.append(GroupPair(_R, (inside[0], anchor), h.point, True))
-                    external_letter.setdefault(inside[0], "R")
-                continue
-            if other in members:
-                pairs.append(GroupPair(p.kind, (link, other), p.point, False, p.id))
-                joints.append((link, other))
-                middle_letter = p.kind.value
+            j = position.get(other)
+            if j is not None:
+                if j > i:  # else taken from `other` already
+                    pairs.append(GroupPair(p.kind, (link, other), p.point, False, p.id))
+                    joints.append((link, other))
             elif done[other] < level:
                 pairs.append(GroupPair(p.kind, (link, other), p.point, True, p.id))
-                external_letter.setdefault(link, p.kind.value)
-    return pairs, joints, external_letter, middle_letter
+                n_external += 1
+    return pairs, joints, n_external
+
+
+def _hinge_pairs(
+    hinge: Hinge,
+    position: Mapping[str, int],
+    done: Mapping[str, int],
+    level: int,
+    ground: str,
+    pairs: list[GroupPair],
+    joints: list[tuple[str, ...]],
+) -> int:
+    """Append a compound hinge's canonical pairs in a group; return its external ones (0 or 1).
+
+    The group links at it are joined to the first of them; the pin is fixed by
+    the earliest known link at it (the ground first).
+    """
+    inside = [x for x in hinge.links if x in position]
+    for x in inside[1:]:
+        pairs.append(GroupPair(_R, (inside[0], x), hinge.point, False))
+    if len(inside) > 1:
+        joints.append(tuple(inside))
+    known = [x for x in hinge.links if x not in position and done[x] < level]
+    if not known:
+        return 0
+    anchor = min(known, key=lambda x: (done[x], x != ground))
+    pairs.append(GroupPair(_R, (inside[0], anchor), hinge.point, True))
+    return 1
 
 
 def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
     """Class of a group from its internal joints (each: the group links it joins).
+
+    ``max(2, most joints on one link, largest contour)``. A group with at most
+    one joint is class 2, a forest has no contour and a plain ring's contour
+    is all its joints: only the other shapes need the contour search.
 
     >>> classify_group(["2", "3"], [("2", "3")])
     2
@@ -695,27 +734,45 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
     >>> classify_group(list("1234"), [("1", "2"), ("2", "3"), ("3", "4"), ("4", "1")])
     4
     """
+    if len(joints) < 2:  # one joint: no link on two joints, no contour
+        return 2
     degree = dict.fromkeys(links, 0)
+    n_edges = 0
     for j in joints:
+        n_edges += len(j)
         for x in j:
             degree[x] += 1
-    most = max(degree.values(), default=0)
-    n_nodes = len(links) + len(joints)
-    n_edges = sum(len(j) for j in joints)
-    # a forest has no contour: skip the cycle search
+    most = max(degree.values())
     components = _components(links, joints)
-    contour = 0 if n_edges == n_nodes - components else _longest_contour(links, joints)
-    return max(2, most, contour)
+    if n_edges == len(links) + len(joints) - components:  # a forest: no contour
+        return max(2, most)
+    if components == 1 and n_edges == 2 * len(joints) and all(d == 2 for d in degree.values()):
+        return max(2, len(joints))  # a ring: the one contour runs through every joint
+    return max(2, most, _longest_contour(links, joints))
 
 
 def _components(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
-    """Connected components of the bipartite graph links ↔ joints (a joint joins ≥ 2 links)."""
-    if len(joints) < 2:  # a dyad's one joint: no union-find needed
-        return len(links) + len(joints) - sum(len(j) for j in joints)
-    pieces = UnionFind(links)
+    """Connected components of the bipartite graph links ↔ joints (a joint joins ≥ 2 links).
+
+    A union-find over the links in a plain dict: each joint merges its links.
+    """
+    parent = {x: x for x in links}
+    count = len(links)
     for joint in joints:
-        pieces.union(*joint)
-    return len({pieces[x] for x in links})
+        root = _root(parent, joint[0])
+        for x in joint[1:]:
+            other = _root(parent, x)
+            if other != root:
+                parent[other] = root
+                count -= 1
+    return count
+
+
+def _root(parent: dict[str, str], x: str) -> str:
+    """The representative of ``x`` in the union-find ``parent`` (halving the path)."""
+    while parent[x] != x:
+        parent[x] = x = parent[parent[x]]
+    return x
 
 
 def _longest_contour(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:

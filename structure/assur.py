@@ -100,6 +100,27 @@ class GroupPair:
     pair: int = 0  # id of the mechanism's pair (0 for a compound hinge's canonical pair)
 
 
+# a group build makes one GroupPair per pair of the mechanism: its slots are set directly,
+# as a frozen dataclass's __init__ does but without its object.__setattr__ per field
+# (unpacking the setters checks at import that they are all the fields)
+_set_kind, _set_links, _set_point, _set_external, _set_pair = (
+    getattr(GroupPair, name).__set__ for name in GroupPair.__slots__
+)
+
+
+def _group_pair(
+    kind: PairKind, links: tuple[str, str], point: str | None, external: bool, pair: int = 0
+) -> GroupPair:
+    """``GroupPair(kind, links, point, external, pair)``, in about half the time."""
+    record = object.__new__(GroupPair)
+    _set_kind(record, kind)
+    _set_links(record, links)
+    _set_point(record, point)
+    _set_external(record, external)
+    _set_pair(record, pair)
+    return record
+
+
 @dataclass(frozen=True, slots=True)
 class AssurGroup:
     """One Assur group: links, pairs, class, order and (for dyads) kind.
@@ -639,15 +660,17 @@ def _dyad_kind(links: list[str], pairs: list[GroupPair]) -> DyadKind | None:
     Each link's letter is its first external pair's, the middle letter the
     last internal pair's ('?' and '' where there is none).
     """
-    first, second = links
-    outer = {}
+    first = links[0]
+    left = right = None
     middle = ""
     for p in pairs:
-        if p.external:
-            outer.setdefault(p.links[0], p.kind)
-        else:
+        if not p.external:
             middle = p.kind
-    return DyadKind.from_letters(outer.get(first, "?") + middle + outer.get(second, "?"))
+        elif p.links[0] == first:
+            left = left or p.kind
+        else:
+            right = right or p.kind
+    return DyadKind.from_letters((left or "?") + middle + (right or "?"))
 
 
 def _group_pairs(
@@ -659,43 +682,46 @@ def _group_pairs(
 ) -> _GroupPairs:
     """Pairs of a group known at ``level``, its internal joints and its number of external pairs.
 
-    A pair between two group links is taken from the earlier one (in group
-    order), a pair to a link known before ``level`` as external, the pairs
-    at a compound hinge once, from the first group link at it
-    (:func:`_hinge_pairs`). ``done`` is the level of every link.
+    ``done`` is the level of every link (the group's own are at ``level``).
+    The group's links are read in order, each link's pairs in file order: a
+    pair to a link known before ``level`` is external, a pair to another group
+    link internal (taken from the first of the two read), the pairs at a
+    compound hinge are taken once, from the first group link at it
+    (:func:`_hinge_pairs`).
     """
     if compound is None:
         compound = mechanism.compound_hinges
-    position = {x: i for i, x in enumerate(links)}
+    pairs_of = mechanism.pairs_of
     pairs: list[GroupPair] = []
     joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
     n_external = 0
+    read: set[str] = set()  # the group links whose pairs are taken
     seen_hinges: set[str] = set()
-    for i, link in enumerate(links):
-        for p in mechanism.pairs_of(link):
+    for link in links:
+        for p in pairs_of(link):
             a = p.a
             other = p.b if link == a else a
             if compound and p.kind is _R and p.point in compound:
                 if p.point not in seen_hinges:
                     seen_hinges.add(p.point)
                     n_external += _hinge_pairs(
-                        compound[p.point], position, done, level, mechanism.ground, pairs, joints
+                        compound[p.point], done, level, mechanism.ground, pairs, joints
                     )
                 continue
-            j = position.get(other)
-            if j is not None:
-                if j > i:  # else taken from `other` already
-                    pairs.append(GroupPair(p.kind, (link, other), p.point, False, p.id))
-                    joints.append((link, other))
-            elif done[other] < level:
-                pairs.append(GroupPair(p.kind, (link, other), p.point, True, p.id))
+            known = done[other]
+            if known < level:
+                pairs.append(_group_pair(p.kind, (link, other), p.point, True, p.id))
                 n_external += 1
+            elif known == level and other not in read:
+                joint = (link, other)
+                pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
+                joints.append(joint)
+        read.add(link)
     return pairs, joints, n_external
 
 
 def _hinge_pairs(
     hinge: Hinge,
-    position: Mapping[str, int],
     done: Mapping[str, int],
     level: int,
     ground: str,
@@ -707,16 +733,22 @@ def _hinge_pairs(
     The group links at it are joined to the first of them; the pin is fixed by
     the earliest known link at it (the ground first).
     """
-    inside = [x for x in hinge.links if x in position]
+    inside: list[str] = []  # the group's links at the hinge
+    known: list[str] = []  # the links known before the group
+    for x in hinge.links:
+        at = done[x]
+        if at == level:
+            inside.append(x)
+        elif at < level:
+            known.append(x)
     for x in inside[1:]:
-        pairs.append(GroupPair(_R, (inside[0], x), hinge.point, False))
+        pairs.append(_group_pair(_R, (inside[0], x), hinge.point, False))
     if len(inside) > 1:
         joints.append(tuple(inside))
-    known = [x for x in hinge.links if x not in position and done[x] < level]
     if not known:
         return 0
-    anchor = min(known, key=lambda x: (done[x], x != ground))
-    pairs.append(GroupPair(_R, (inside[0], anchor), hinge.point, True))
+    anchor = known[0] if len(known) == 1 else min(known, key=lambda x: (done[x], x != ground))
+    pairs.append(_group_pair(_R, (inside[0], anchor), hinge.point, True))
     return 1
 
 

@@ -73,6 +73,12 @@ __all__ = [
 
 def roman(number: int) -> str:
     """Roman numeral of a class: ``roman(4) == 'IV'``."""
+    known = _SMALL_ROMANS.get(number)  # every group's label asks: the usual ones are kept
+    return _roman_numeral(number) if known is None else known
+
+
+def _roman_numeral(number: int) -> str:
+    """The numeral, largest values first (subtractive pairs such as IV included)."""
     out = ""
     for value, letters in (
         (1000, "M"), (900, "CM"), (500, "D"), (400, "CD"), (100, "C"), (90, "XC"),
@@ -82,6 +88,9 @@ def roman(number: int) -> str:
             out += letters
             number -= value
     return out
+
+
+_SMALL_ROMANS = {number: _roman_numeral(number) for number in range(40)}
 
 
 @dataclass(frozen=True, slots=True)

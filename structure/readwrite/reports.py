@@ -212,10 +212,8 @@ def _group_json(g: AssurGroup) -> str:
     )
 
 
-def _edge_json(edge: tuple[int, int]) -> str:
-    """Compact JSON of an edge of the group DAG: ``[0,1]``."""
-    source, target = edge
-    return f"[{source},{target}]"
+#: compact JSON of an edge ``(source, target)`` of the group DAG, ``[0,1]`` (ints: %d is repr)
+_edge_json = "[%d,%d]".__mod__
 
 
 @dataclass(frozen=True, slots=True)

@@ -710,7 +710,7 @@ def _group_pairs(
         for p in pairs_of(link):
             a = p.a
             other = p.b if link == a else a
-            if compound and p.kind is _R and p.point in compound:
+            if compound and p.kind is _R and p.point and p.point in compound:
                 if p.point not in seen_hinges:
                     seen_hinges.add(p.point)
                     n_external += _hinge_pairs(
@@ -775,8 +775,8 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
     >>> classify_group(list("1234"), [("1", "2"), ("2", "3"), ("3", "4"), ("4", "1")])
     4
     """
-    if len(joints) < 2:  # one joint: no link on two joints, no contour
-        return 2
+    if not joints or (len(joints) == 1 and len(joints[0]) == 2 and joints[0][0] != joints[0][1]):
+        return 2  # a dyad's one joint: no link on two joints, no contour
     degree = dict.fromkeys(links, 0)
     n_edges = 0
     for j in joints:
@@ -787,7 +787,11 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
     components = _components(links, joints)
     if n_edges == len(links) + len(joints) - components:  # a forest: no contour
         return max(2, most)
-    if components == 1 and n_edges == 2 * len(joints) and all(d == 2 for d in degree.values()):
+    if (
+        components == 1
+        and all(d == 2 for d in degree.values())
+        and all(len(j) == 2 and j[0] != j[1] for j in joints)
+    ):
         return max(2, len(joints))  # a ring: the one contour runs through every joint
     return max(2, most, _longest_contour(links, joints))
 
@@ -800,6 +804,8 @@ def _components(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
     parent = {x: x for x in links}
     count = len(links)
     for joint in joints:
+        if not joint:
+            continue
         root = _root(parent, joint[0])
         for x in joint[1:]:
             other = _root(parent, x)

@@ -191,24 +191,26 @@ def _group_json(g: AssurGroup) -> str:
     pairs = []
     for p in g.pairs:
         link, other = p.links
+        first = names.get(link) or _quoted(link)  # a group link (the record's promise)
         point = "null" if p.point is None else _quoted(p.point)
         if p.external:
             known = attached.get(other)
             if known is None:
                 known = attached[other] = _quoted(other)
             pairs.append(
-                f'{{"links":[{names[link]},{known}],"kind":{_PAIR_JSON[p.kind]},'
+                f'{{"links":[{first},{known}],"kind":{_PAIR_JSON[p.kind]},'
                 f'"point":{point},"external":true}}'
             )
         else:
+            second = names.get(other) or _quoted(other)
             pairs.append(
-                f'{{"links":[{names[link]},{names[other]}],"kind":{_PAIR_JSON[p.kind]},'
+                f'{{"links":[{first},{second}],"kind":{_PAIR_JSON[p.kind]},'
                 f'"point":{point},"external":false}}'
             )
     return (
-        f'{{"links":[{",".join(names.values())}],"class":{g.assur_class},"order":{g.order},'
-        f'"kind":{_DYAD_JSON[g.kind]},"attached_to":[{",".join(attached.values())}],'
-        f'"pairs":[{",".join(pairs)}]}}'
+        f'{{"links":[{",".join(map(names.__getitem__, g.links))}],"class":{g.assur_class},'
+        f'"order":{g.order},"kind":{_DYAD_JSON[g.kind]},'
+        f'"attached_to":[{",".join(attached.values())}],"pairs":[{",".join(pairs)}]}}'
     )
 
 

@@ -33,7 +33,7 @@ import heapq
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from operator import itemgetter
+from operator import attrgetter, itemgetter
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -48,7 +48,7 @@ from .rigidity.constraints import (
     constraint_system,
     sketch_realization,
 )
-from .rigidity.matching import strongly_connected
+from .rigidity.matching import NUMPY_ROWS, Assignment, block_arrays, strongly_connected
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
 from .utils import UnionFind
 from .validation import validated
@@ -355,7 +355,7 @@ def plan_groups(
     Raises as :func:`decompose` does.
     """
     drivers = tuple(mechanism.driver_links if drivers is None else drivers)
-    if any(p.kind is PairKind.H for p in mechanism.pairs):
+    if PairKind.H in map(attrgetter("kind"), mechanism.pairs):
         raise DecompositionError("replace the higher pairs before decomposing")
     if analyses is None:
         generic = generic_rank(constraint_system(mechanism, drivers))
@@ -417,179 +417,295 @@ def _plan_from_blocks(
     rows fix one pin, are merged, and so are blocks that end up depending on
     each other. The group order is a topological order of the dependencies
     that the rows' other unknowns give.
+
+    A large mechanism's rows and matching are read as numpy arrays
+    (:func:`_merged_blocks_by_numpy`), a small one's row by row
+    (:func:`_merged_blocks_by_rows`, cheaper below a few thousand rows); both
+    give the same blocks, named the same.
     """
-    system = analysis.system
     assert analysis.blocks is not None
-    start = _completing_blocks(mechanism, drivers, system, analysis.blocks)
-    merged = UnionFind(start.values())
-    owner = _block_owners(system, analysis.assigned, start, merged)
-    _merge_split_pairs(system, analysis.assigned, owner, merged)
-    nodes, edges, root = _merge_cycles(system, analysis.assigned, owner, merged)
-    del owner, merged
+    if analysis.system.n_pair_rows >= NUMPY_ROWS:
+        nodes, edges, link_root, ascending = _merged_blocks_by_numpy(drivers, analysis)
+    else:
+        nodes, edges, link_root = _merged_blocks_by_rows(drivers, analysis)
+        ascending = False
     members: dict[int, list[str]] = {}
     first_position: dict[int, int] = {}  # of each block's first link, the order's key
-    for i, link in enumerate(mechanism.links):  # the ground (first) is never in start
-        if link in start:
-            b = root[start[link]]
+    # the ground is first in mechanism.links; the moving links follow in their order
+    for i, (link, b) in enumerate(zip(analysis.system.links, link_root, strict=True), start=1):
+        if b >= 0:
             found = members.get(b)
             if found is None:
                 members[b] = [link]
                 first_position[b] = i
             else:
                 found.append(link)
-    del root, start
-    order = _topological_order(nodes, edges, first_position)
+    order = _topological_order(nodes, edges, first_position, ascending=ascending)
     return GroupPlan(
         mechanism, drivers, members, order, edges, tuple(removed_links), tuple(removed_pairs)
     )
 
 
-def _completing_blocks(
-    mechanism: Mechanism,
-    drivers: Sequence[str],
-    system: ConstraintSystem,
-    blocks: Sequence[Sequence[int]],
-) -> dict[str, int]:
-    """The block that completes each moving link other than a driver (its later unknown's)."""
-    block_of = [0] * len(system.unknowns)
-    for b, units in enumerate(blocks):
-        for u in units:
+#: the merged blocks (each named by a member), the DAG's edges, each moving link's merged block
+_MergedBlocks = tuple[list[int], set[tuple[int, int]], list[int]]
+
+
+def _merged_blocks_by_numpy(
+    drivers: Sequence[str], analysis: RankAnalysis
+) -> tuple[list[int], set[tuple[int, int]], list[int], bool]:
+    """The merged blocks of :func:`_plan_from_blocks`, found with numpy.
+
+    The fourth value tells whether every dependency goes from a block whose
+    first link comes earlier to one whose first link comes later.
+    """
+    system, blocks = analysis.system, analysis.blocks
+    assert blocks is not None
+    rows = _PairRows.of(system, analysis.assigned)
+    start = _completing_blocks(system, drivers, blocks)
+    merged = UnionFind(start[start >= 0].tolist())
+    owner = _block_owners(system, rows, start, merged)
+    _merge_split_pairs(system, rows, owner, merged)
+    nodes, edges, root, ascending = _merge_cycles(rows, owner, merged, start)
+    return nodes, edges, np.where(start >= 0, root[np.maximum(start, 0)], -1).tolist(), ascending
+
+
+def _merged_blocks_by_rows(drivers: Sequence[str], analysis: RankAnalysis) -> _MergedBlocks:
+    """The merged blocks of :func:`_plan_from_blocks`, row by row (a small mechanism's).
+
+    The same steps as :func:`_merged_blocks_by_numpy`, in the same order.
+    """
+    system, blocks = analysis.system, analysis.blocks
+    assert blocks is not None
+    n_links, n_rows = len(system.links), system.n_pair_rows
+    slots = analysis.assigned.units[: 2 * n_rows]
+    units = list(zip(slots[0::2], slots[1::2], strict=True))
+    block_of = [0] * system.n_unknowns
+    for b, members in enumerate(blocks):
+        for u in members:
             block_of[u] = b
     driver_set = set(drivers)
-    return {
-        link: max(block_of[system.pos[link]], block_of[system.ang[link]])
-        for link in mechanism.moving_links
-        if link not in driver_set
-    }
-
-
-def _block_owners(
-    system: ConstraintSystem,
-    assigned: Sequence[Sequence[int]],
-    start: Mapping[str, int],
-    merged: UnionFind,
-) -> list[int | None]:
-    """The block each unknown belongs to; a pin follows the link whose row fixes it.
-
-    Links whose pin rows fix one pin are merged into one block.
-    """
-    owner: list[int | None] = [
-        None if unknown.kind == "pin" else start.get(unknown.owner) for unknown in system.unknowns
+    start = [
+        -1 if link in driver_set else max(block_of[2 * i], block_of[2 * i + 1])
+        for i, link in enumerate(system.links)
     ]
-    for r, units in enumerate(assigned[: system.n_pair_rows]):
-        if system.row_kind[r] is not _PIN:
-            continue
-        b = start.get(system.row_link[r])
-        for u in units:
-            if system.unknowns[u].kind == "pin" and b is not None:
-                known = owner[u]
-                if known is None:
-                    owner[u] = b
-                else:
-                    merged.union(known, b)
-    return owner
-
-
-def _merge_split_pairs(
-    system: ConstraintSystem,
-    assigned: Sequence[Sequence[int]],
-    owner: Sequence[int | None],
-    merged: UnionFind,
-) -> None:
-    """Merge the blocks whose unknowns rows of one pair fix: a pair is never split.
-
-    Most pairs lie in one block: only the first block of each pair is kept,
-    and a set of its blocks is made for the few pairs that lie in several.
-    """
+    merged = UnionFind(b for b in start if b >= 0)
+    owner = [start[u >> 1] for u in range(2 * n_links)] + [-1] * len(system.pins)
+    kinds, pairs = system.row_kind, system.row_pair
+    for r in range(n_rows):  # a pin follows the link whose row fixes it
+        if kinds[r] is _PIN:
+            b = start[system.links.index(system.row_link[r])]
+            for u in units[r]:
+                if u >= 2 * n_links and b >= 0:
+                    if owner[u] < 0:
+                        owner[u] = b
+                    else:
+                        merged.union(owner[u], b)
     first: dict[int, int] = {}
     several: dict[int, set[int]] = {}
-    row_kind, row_pair = system.row_kind, system.row_pair
-    for r, units in enumerate(assigned[: system.n_pair_rows]):
-        if row_kind[r] is _PIN:
-            continue
-        for u in units:
-            b = owner[u]
-            if b is None:
-                continue
-            pid = row_pair[r]
-            known = first.setdefault(pid, b)
-            if known != b:
-                several.setdefault(pid, {known}).add(b)
-    for pid in first:
-        blocks = several.get(pid)
-        if blocks is not None:
-            merged.union(*blocks)
-
-
-def _merge_cycles(
-    system: ConstraintSystem,
-    assigned: Sequence[Sequence[int]],
-    owner: Sequence[int | None],
-    merged: UnionFind,
-) -> tuple[list[int], set[tuple[int, int]], dict[int, int]]:
-    """Merge blocks that depend on each other until their dependencies form a DAG.
-
-    Returns the merged blocks (each named by a member), the DAG's edges and
-    the merged block of every block.
-    """
-    while True:
+    for r in range(n_rows):  # a pair is never split
+        if kinds[r] is not _PIN:
+            for u in units[r]:
+                if u >= 0 and owner[u] >= 0:
+                    known = first.setdefault(pairs[r], owner[u])
+                    if known != owner[u]:
+                        several.setdefault(pairs[r], {known}).add(owner[u])
+    for found in several.values():
+        merged.union(*found)
+    adj, adj_start = system.adj, system.adj_start
+    while True:  # blocks that depend on each other merge
         root = {b: merged[b] for b in merged}
-        merged_owner = [None if b is None else root[b] for b in owner]
-        edges = _block_dependencies(system, assigned, merged_owner)
+        merged_owner = [root[b] if b >= 0 else -1 for b in owner]
+        edges: set[tuple[int, int]] = set()
+        for r in range(n_rows):
+            target = merged_owner[units[r][0]] if units[r][0] >= 0 else -1
+            if target >= 0:
+                for w in adj[adj_start[r] : adj_start[r + 1]]:
+                    source = merged_owner[w]
+                    if source >= 0 and source != target:
+                        edges.add((source, target))
         nodes = sorted(set(root.values()))
-        # strongly connected components of the group graph (nodes numbered in order,
-        # edges as flat arrays): cycles merge
-        sources, targets = _numbered_edges(nodes, edges)
-        components = strongly_connected(sources, targets, len(nodes))
-        del sources, targets
+        number = {b: i for i, b in enumerate(nodes)}
+        components = strongly_connected(
+            [number[u] for u, _ in edges], [number[v] for _, v in edges], len(nodes)
+        )
         cycles = [c for c in components if len(c) > 1]
-        del components
         if not cycles:
-            return nodes, edges, root
+            return nodes, edges, [root[b] if b >= 0 else -1 for b in start]
         for c in cycles:
             merged.union(*(nodes[i] for i in c))
 
 
+@dataclass(frozen=True, slots=True)
+class _PairRows:
+    """The pair rows of a matched system as numpy arrays (drivers and probes left out).
+
+    ``units[r]`` holds the two unknown slots of row ``r`` (-1 for none, as in
+    :class:`~structure.rigidity.matching.Assignment`); ``pin`` marks the rows
+    of a link at a compound pin; ``adj_start``/``adj`` are the system's
+    adjacency.
+    """
+
+    units: np.ndarray
+    pin: np.ndarray
+    pair: np.ndarray
+    adj_start: np.ndarray
+    adj: np.ndarray
+
+    @classmethod
+    def of(cls, system: ConstraintSystem, assigned: Sequence[Sequence[int]]) -> _PairRows:
+        n = system.n_pair_rows
+        if isinstance(assigned, Assignment):
+            units = np.frombuffer(assigned.units, dtype=np.int32)[: 2 * n].reshape(n, 2)
+        else:
+            units = np.full((n, 2), -1, dtype=np.int32)
+            for r, got in enumerate(assigned[:n]):
+                units[r, : len(got)] = got
+        pin = system.row_codes()[:n] == _PIN_CODE
+        return cls(
+            units.astype(np.int64),
+            pin,
+            np.frombuffer(system.row_pair, dtype=np.int32)[:n].astype(np.int64),
+            np.frombuffer(system.adj_start, dtype=np.int64)[: n + 1],
+            np.frombuffer(system.adj, dtype=np.int32),
+        )
+
+
+def _completing_blocks(
+    system: ConstraintSystem, drivers: Sequence[str], blocks: Sequence[Sequence[int]]
+) -> np.ndarray:
+    """The block that completes each moving link (its later unknown's), -1 for a driver."""
+    units, block_start = block_arrays(blocks)
+    block_of = np.empty(system.n_unknowns, dtype=np.int64)
+    block_of[units] = np.repeat(np.arange(len(blocks)), np.diff(block_start))
+    n = len(system.links)
+    start = np.maximum(block_of[0 : 2 * n : 2], block_of[1 : 2 * n : 2])
+    driver_set = set(drivers)
+    start[[i for i, link in enumerate(system.links) if link in driver_set]] = -1
+    return start
+
+
+def _block_owners(
+    system: ConstraintSystem, rows: _PairRows, start: np.ndarray, merged: UnionFind
+) -> np.ndarray:
+    """The block each unknown belongs to (-1 for the knowns).
+
+    A pin follows the link whose row fixes it; links whose pin rows fix one
+    pin are merged into one block.
+    """
+    n = len(system.links)
+    owner = np.full(system.n_unknowns, -1, dtype=np.int64)
+    owner[: 2 * n] = np.repeat(start, 2)
+    if rows.pin.any():
+        index = {link: i for i, link in enumerate(system.links)}
+        for r in np.flatnonzero(rows.pin).tolist():
+            b = int(start[index[system.row_link[r]]])
+            for u in rows.units[r].tolist():
+                if u >= 2 * n and b >= 0:  # a pin's unknown
+                    known = int(owner[u])
+                    if known < 0:
+                        owner[u] = b
+                    else:
+                        merged.union(known, b)
+    return owner
+
+
+def _merge_split_pairs(
+    system: ConstraintSystem, rows: _PairRows, owner: np.ndarray, merged: UnionFind
+) -> None:
+    """Merge the blocks whose unknowns rows of one pair fix: a pair is never split.
+
+    Most pairs lie in one block: the few whose matched units lie in several
+    are found with numpy, then merged in the order the rows name them.
+    """
+    slots = np.flatnonzero(~rows.pin[:, None].repeat(2, axis=1).reshape(-1))
+    units = rows.units.reshape(-1)[slots]
+    slots, units = slots[units >= 0], units[units >= 0]
+    blocks = owner[units]
+    slots, blocks = slots[blocks >= 0], blocks[blocks >= 0]
+    pids = rows.pair[slots // 2]
+    if not len(pids):
+        return
+    by_pair = np.argsort(pids, kind="stable")
+    first_block = np.empty_like(blocks)
+    head = np.r_[True, pids[by_pair][1:] != pids[by_pair][:-1]]
+    first_block[by_pair] = blocks[by_pair][
+        np.maximum.accumulate(np.where(head, np.arange(len(pids)), 0))
+    ]
+    split = np.zeros(int(pids.max()) + 1, dtype=bool)
+    split[pids[blocks != first_block]] = True
+    keep = split[pids]
+    if not keep.any():
+        return
+    # the split pairs' blocks as sets, filled in the order of the rows, pairs by first row
+    several: dict[int, set[int]] = {}
+    for pid, b in zip(pids[keep].tolist(), blocks[keep].tolist(), strict=True):
+        several.setdefault(pid, set()).add(b)
+    for found in several.values():
+        merged.union(*found)
+
+
+def _merge_cycles(
+    rows: _PairRows, owner: np.ndarray, merged: UnionFind, start: np.ndarray
+) -> tuple[list[int], set[tuple[int, int]], np.ndarray, bool]:
+    """Merge blocks that depend on each other until their dependencies form a DAG.
+
+    Returns the merged blocks (each named by a member), the DAG's edges, the
+    merged block of every block (-1 for none), and whether every edge goes
+    from a block whose first link (``start`` holds each link's block) comes
+    earlier to one whose first link comes later: then there is no cycle to
+    look for, and the order by first link is the solve order.
+    """
+    n_blocks = int(start.max(initial=-1)) + 1
+    linked = np.flatnonzero(start >= 0)
+    while True:
+        root = np.full(n_blocks, -1, dtype=np.int64)
+        members = list(merged)
+        root[members] = [merged[b] for b in members]
+        merged_owner = np.where(owner >= 0, root[np.maximum(owner, 0)], -1)
+        sources, targets = _block_dependencies(rows, merged_owner)
+        nodes = np.sort(root[root >= 0])
+        nodes = nodes[np.r_[True, nodes[1:] != nodes[:-1]][: len(nodes)]]
+        first_link = np.full(n_blocks, len(start), dtype=np.int64)
+        np.minimum.at(first_link, root[start[linked]], linked)
+        if bool((first_link[sources] < first_link[targets]).all()):
+            edges = set(zip(sources.tolist(), targets.tolist(), strict=True))
+            return nodes.tolist(), edges, root, True
+        edges = set(zip(sources.tolist(), targets.tolist(), strict=True))
+        # strongly connected components of the group graph (nodes numbered in order,
+        # edges as flat arrays, in the set's order): cycles merge
+        numbered = _numbered_edges(nodes, edges)
+        components = strongly_connected(*numbered, len(nodes))
+        del numbered
+        cycles = [c for c in components if len(c) > 1]
+        del components
+        if not cycles:
+            return nodes.tolist(), edges, root, False
+        for c in cycles:
+            merged.union(*(int(nodes[i]) for i in c))
+
+
 def _numbered_edges(
-    nodes: list[int], edges: set[tuple[int, int]]
-) -> tuple[Sequence[int], Sequence[int]]:
-    """The ``edges`` between sorted ``nodes`` as two sequences of node numbers, in set order.
+    nodes: np.ndarray, edges: set[tuple[int, int]]
+) -> tuple[np.ndarray, np.ndarray]:
+    """The ``edges`` between sorted ``nodes`` as two arrays of node numbers, in set order."""
+    pairs = np.array(list(edges), dtype=np.int64).reshape(-1, 2)
+    return np.searchsorted(nodes, pairs[:, 0]), np.searchsorted(nodes, pairs[:, 1])
 
-    A large mechanism's are numbered by numpy (a dict of its hundreds of
-    thousands of nodes would cost more memory than the edges themselves).
+
+def _block_dependencies(rows: _PairRows, merged_owner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(sources, targets)``: each merged block a row of another block also touches.
+
+    ``merged_owner`` is the merged block of each unknown (-1 for the knowns).
+    The edges come in the order of the rows and of their unknowns (repeats
+    included), so a set made of them is the one a loop over the rows makes.
     """
-    if len(nodes) < 2048:
-        number = {b: i for i, b in enumerate(nodes)}
-        return [number[u] for u, _ in edges], [number[v] for _, v in edges]
-    numbered = np.array(nodes, dtype=np.int64)
-    count = len(edges)
-    return (
-        np.searchsorted(numbered, np.fromiter((u for u, _ in edges), np.int64, count)),
-        np.searchsorted(numbered, np.fromiter((v for _, v in edges), np.int64, count)),
-    )
-
-
-def _block_dependencies(
-    system: ConstraintSystem,
-    assigned: Sequence[Sequence[int]],
-    merged_owner: Sequence[int | None],
-) -> set[tuple[int, int]]:
-    """``(source, target)`` for each merged block a row of another block also touches.
-
-    ``merged_owner`` is the merged block of each unknown (None for the knowns).
-    """
-    edges: set[tuple[int, int]] = set()
-    for r, units in enumerate(assigned[: system.n_pair_rows]):
-        if not units:
-            continue
-        target = merged_owner[units[0]]
-        if target is None:
-            continue
-        for w in system.row_adj[r]:
-            source = merged_owner[w]
-            if source is not None and source != target:
-                edges.add((source, target))
-    return edges
+    first = rows.units[:, 0]
+    counts = np.diff(rows.adj_start)
+    row_of = np.repeat(np.arange(len(first)), counts)
+    target = np.where(first >= 0, merged_owner[np.maximum(first, 0)], -1)[row_of]
+    source = merged_owner[rows.adj[rows.adj_start[0] : rows.adj_start[-1]]]
+    keep = (target >= 0) & (source >= 0) & (source != target)
+    return source[keep], target[keep]
 
 
 def _decomposition(
@@ -621,9 +737,20 @@ def _decomposition(
 
 
 def _topological_order(
-    nodes: Sequence[int], edges: set[tuple[int, int]], key: dict[int, int]
+    nodes: Sequence[int],
+    edges: set[tuple[int, int]],
+    key: dict[int, int],
+    *,
+    ascending: bool = False,
 ) -> list[int]:
-    """Kahn's algorithm, always taking the ready node of smallest ``key``."""
+    """Kahn's algorithm, always taking the ready node of smallest ``key`` (keys are distinct).
+
+    When every edge goes from a smaller key to a larger one (``ascending``
+    says it is known), that order is the nodes sorted by key (the smallest
+    key left never waits for a predecessor), found without the heap.
+    """
+    if ascending or all(key[u] < key[v] for u, v in edges):
+        return sorted(nodes, key=key.__getitem__)
     indegree = dict.fromkeys(nodes, 0)
     out: dict[int, list[int]] = {}
     for u, v in edges:
@@ -644,6 +771,7 @@ def _topological_order(
 
 _R = PairKind.R  # enum member lookups are slow in hot loops
 _PIN = RowKind.PIN
+_PIN_CODE = list(RowKind).index(_PIN)  # its code in ConstraintSystem.row_codes
 
 _source = itemgetter(0)  # of an edge
 

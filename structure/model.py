@@ -27,11 +27,14 @@ from __future__ import annotations
 
 import math
 import operator
+from array import array
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import FrozenInstanceError, InitVar, dataclass, field
 from functools import cached_property
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
+
+import numpy as np
 
 from .errors import EdgeListError, EdgeListProblem, StatementError
 from .kinds import LoadKind, PairKind
@@ -74,6 +77,24 @@ def number_text(value: float) -> str:
     return text[:-2] if text.endswith(".0") else text
 
 
+#: the options of a pair other than its slide angle, in the order of :class:`Pair`'s fields,
+#: with their defaults: most pairs of a large file have none of them (see :class:`Pair`)
+_RARE_OPTIONS = (
+    ("flat", None),
+    ("roller", None),
+    ("centers", None),
+    ("normal_deg", None),
+    ("span", None),
+    ("friction", None),
+    ("circle", None),
+    ("gear", False),
+    ("teeth", None),
+    ("internal", None),
+    ("module", None),
+)
+_NO_RARE_OPTIONS = tuple(default for _, default in _RARE_OPTIONS)
+
+
 @dataclass(frozen=True, slots=True)
 class Pair:
     """One kinematic pair between links ``a`` and ``b``.
@@ -113,6 +134,15 @@ class Pair:
         (``normal`` gives it in radians).
     line_no : int
         Line of the description it came from (0 when built in Python).
+
+    Notes
+    -----
+    A large file is mostly pairs with no option but the slide angle, so the
+    record stores ``id``, ``kind``, ``a``, ``b``, ``point``, ``angle_deg``,
+    ``line_no`` and one field for all the other options (None when none is
+    given: 96 bytes a pair instead of 176, issue 11). Those options are still
+    parameters of the constructor and of :func:`dataclasses.replace`, read as
+    attributes, and compared and hashed as before.
     """
 
     id: int
@@ -121,18 +151,68 @@ class Pair:
     b: str
     point: str | None = None
     angle_deg: float | None = None
-    flat: str | None = None
-    roller: str | None = None
-    centers: tuple[str | None, str | None] | None = None
-    normal_deg: float | None = None
+    flat: InitVar[str | None] = None
+    roller: InitVar[str | None] = None
+    centers: InitVar[tuple[str | None, str | None] | None] = None
+    normal_deg: InitVar[float | None] = None
     line_no: int = field(default=0, compare=False)
-    span: float | None = None
-    friction: float | None = None
-    circle: float | None = None
-    gear: bool = False
-    teeth: tuple[int | None, int | None] | None = None
-    internal: str | None = None
-    module: float | None = None
+    span: InitVar[float | None] = None
+    friction: InitVar[float | None] = None
+    circle: InitVar[float | None] = None
+    gear: InitVar[bool] = False
+    teeth: InitVar[tuple[int | None, int | None] | None] = None
+    internal: InitVar[str | None] = None
+    module: InitVar[float | None] = None
+    #: the options of :data:`_RARE_OPTIONS` in that order, or None when all are defaults
+    _rare_options: tuple[Any, ...] | None = field(init=False, repr=False)
+
+    def __init__(
+        self,
+        id: int,
+        kind: PairKind,
+        a: str,
+        b: str,
+        point: str | None = None,
+        angle_deg: float | None = None,
+        flat: str | None = None,
+        roller: str | None = None,
+        centers: tuple[str | None, str | None] | None = None,
+        normal_deg: float | None = None,
+        line_no: int = 0,
+        span: float | None = None,
+        friction: float | None = None,
+        circle: float | None = None,
+        gear: bool = False,
+        teeth: tuple[int | None, int | None] | None = None,
+        internal: str | None = None,
+        module: float | None = None,
+    ) -> None:
+        # the dataclass's own __init__ written out, faster (see _fill_pair); the options but
+        # the angle go to one field, None for the many pairs that have none
+        rare = (flat, roller, centers, normal_deg, span, friction, circle, gear, teeth,
+                internal, module)
+        rare_options = None if rare == _NO_RARE_OPTIONS else rare
+        _fill_pair(self, id, kind, a, b, point, angle_deg, line_no, rare_options)
+
+    @classmethod
+    def plain(
+        cls,
+        id: int,
+        kind: PairKind,
+        a: str,
+        b: str,
+        point: str | None = None,
+        angle_deg: float | None = None,
+        line_no: int = 0,
+    ) -> Pair:
+        """The same as ``Pair(id, kind, a, b, point, angle_deg, line_no=line_no)``, faster.
+
+        The readers' way to build the plain pairs of a large file: a call of
+        the class with keywords costs half as much again as the record.
+        """
+        pair = object.__new__(cls)
+        _fill_pair(pair, id, kind, a, b, point, angle_deg, line_no, None)
+        return pair
 
     @property
     def angle(self) -> float | None:
@@ -197,6 +277,80 @@ class Pair:
 
     def __repr__(self) -> str:
         return f"Pair({self.id}, {self.label!r})"
+
+
+def _rare_option(position: int, name: str, default: Any) -> property:
+    """The property that reads option ``name`` of a :class:`Pair` from its ``_rare_options``."""
+
+    def read(pair: Pair) -> Any:
+        rare = pair._rare_options
+        return default if rare is None else rare[position]
+
+    read.__name__ = name
+    read.__doc__ = f"The pair's ``{name}`` ({default} when not given)."
+    return property(read)
+
+
+# set after the class is made: a dataclass takes a class attribute of a parameter's name
+# for its default, and these parameters are InitVars whose values the properties read
+for _position, (_name, _default) in enumerate(_RARE_OPTIONS):
+    setattr(Pair, _name, _rare_option(_position, _name, _default))
+del _position, _name, _default
+
+_RARE_NAMES = frozenset(name for name, _ in _RARE_OPTIONS)
+_FIELDS_SETATTR, _FIELDS_DELATTR = Pair.__setattr__, Pair.__delattr__
+
+
+def _frozen_setattr(pair: Pair, name: str, value: Any) -> None:
+    """Refuse to set an option read through a property, as the frozen fields are refused."""
+    if name in _RARE_NAMES:
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+    _FIELDS_SETATTR(pair, name, value)
+
+
+def _frozen_delattr(pair: Pair, name: str) -> None:
+    """Refuse to delete an option read through a property, as the frozen fields are refused."""
+    if name in _RARE_NAMES:
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
+    _FIELDS_DELATTR(pair, name)
+
+
+Pair.__setattr__ = _frozen_setattr  # type: ignore[method-assign]
+Pair.__delattr__ = _frozen_delattr  # type: ignore[method-assign]
+
+#: the setters of the slots of :class:`Pair`, in the order :func:`_fill_pair` unpacks them
+_PAIR_SETTERS = tuple(
+    getattr(Pair, name).__set__
+    for name in ("id", "kind", "a", "b", "point", "angle_deg", "line_no", "_rare_options")
+)
+
+
+def _fill_pair(
+    pair: Pair,
+    id: int,
+    kind: PairKind,
+    a: str,
+    b: str,
+    point: str | None,
+    angle_deg: float | None,
+    line_no: int,
+    rare_options: tuple[Any, ...] | None,
+) -> None:
+    """Set the fields of a new :class:`Pair` through its slots' setters.
+
+    A frozen record refuses ``pair.x = value``; the slots' own setters are
+    twice as fast as the ``object.__setattr__`` a dataclass's ``__init__``
+    calls, and a large file has 10^6 pairs.
+    """
+    set_id, set_kind, set_a, set_b, set_point, set_angle, set_line, set_rare = _PAIR_SETTERS
+    set_id(pair, id)
+    set_kind(pair, kind)
+    set_a(pair, a)
+    set_b(pair, b)
+    set_point(pair, point)
+    set_angle(pair, angle_deg)
+    set_line(pair, line_no)
+    set_rare(pair, rare_options)
 
 
 @dataclass(frozen=True, slots=True)
@@ -365,7 +519,7 @@ def make_pair(
     given = {key: value for key, value in options.items() if value is not None} if options else {}
     kind = check_pair(kind, a, b, given, gear=gear)
     if not given and not gear:
-        return Pair(pair_id, kind, a, b, point, line_no=line_no)
+        return Pair.plain(pair_id, kind, a, b, point, line_no=line_no)
     return Pair(pair_id, kind, a, b, point, line_no=line_no, gear=bool(gear), **_pair_fields(given))
 
 
@@ -503,20 +657,16 @@ class Mechanism:
     shared_hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
     _by_id: dict[int, Pair] = field(init=False, repr=False, compare=False)
-    _by_link: dict[str, tuple[Pair, ...]] = field(init=False, repr=False, compare=False)
+    _links: _LinkIndex = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # one record per pair, no more: a large file's memory is its pairs (issue 11)
         object.__setattr__(self, "points", MappingProxyType(dict(self.points)))
         pairs = self.pairs
-        by_link: dict[str, list[Pair]] = {self.ground: []}
-        for p in pairs:
-            by_link.setdefault(p.a, []).append(p)
-            by_link.setdefault(p.b, []).append(p)
-        object.__setattr__(self, "links", tuple(by_link))
-        object.__setattr__(self, "_by_link", {k: tuple(v) for k, v in by_link.items()})
-        del by_link
-        in_place = all(p.id == k for k, p in enumerate(pairs, start=1))
+        index = _link_index(pairs, self.ground)
+        object.__setattr__(self, "_links", index)
+        object.__setattr__(self, "links", index.links)
+        in_place = all(map(operator.eq, map(_PAIR_ID, pairs), range(1, len(pairs) + 1)))
         object.__setattr__(self, "_by_id", {} if in_place else {p.id: p for p in pairs})
         shared = _shared_hinges(pairs)
         object.__setattr__(self, "shared_hinges", shared)
@@ -611,26 +761,18 @@ class Mechanism:
 
     def has_link(self, link: str) -> bool:
         """True when ``link`` is a link of the mechanism (the ground included)."""
-        return link in self._by_link
+        return link in self._links.number
 
     def joined(self, a: str, b: str) -> bool:
         """True when some pair joins links ``a`` and ``b``, or they share a compound hinge."""
-        if any(p.other(a) == b for p in self._by_link.get(a, ())):
+        if any(p.other(a) == b for p in self.pairs_of(a)):
             return True
         return any(a in h.links and b in h.links for h in self.compound_hinges.values())
 
     def connected_to_ground(self) -> set[str]:
         """The links reachable from the ground through pairs."""
-        seen = {self.ground}
-        stack = [self.ground]
-        while stack:
-            link = stack.pop()
-            for p in self._by_link.get(link, ()):
-                other = p.other(link)
-                if other not in seen:
-                    seen.add(other)
-                    stack.append(other)
-        return seen
+        reached = _reached(self._links, self._links.number[self.ground])
+        return {link for link, hit in zip(self.links, reached, strict=True) if hit}
 
     def ground_joint(self, link: str) -> GroundJoint | None:
         """How ``link`` is jointed to the ground: an R pivot first, else a P slide, else None.
@@ -644,7 +786,7 @@ class Mechanism:
         >>> m.ground_joint("1").point, m.ground_joint("2").kind.value, m.ground_joint("9")
         ('A', 'P', None)
         """
-        to_ground = [p for p in self._by_link.get(link, ()) if p.other(link) == self.ground]
+        to_ground = [p for p in self.pairs_of(link) if p.other(link) == self.ground]
         pin = next((p for p in to_ground if p.kind is PairKind.R), None)
         if pin is not None:
             return GroundJoint(PairKind.R, pin, pin.point)
@@ -666,7 +808,11 @@ class Mechanism:
 
     def pairs_of(self, link: str) -> Iterator[Pair]:
         """The pairs that touch ``link``, in file order."""
-        return iter(self._by_link.get(link, ()))
+        index = self._links
+        k = index.number.get(link)
+        if k is None:
+            return iter(())
+        return iter(index.incident[index.offsets[k] : index.offsets[k + 1]])
 
     def pair(self, pair_id: int) -> Pair:
         """The pair with id ``pair_id``."""
@@ -696,6 +842,66 @@ class Mechanism:
     def __repr__(self) -> str:
         title = f" {self.name!r}" if self.name else ""
         return f"<Mechanism{title}: {len(self.moving_links)} moving links, {len(self.pairs)} pairs>"
+
+
+_PAIR_ID = operator.attrgetter("id")
+
+
+@dataclass(frozen=True, slots=True)
+class _LinkIndex:
+    """The pairs of each link, as flat tables over link numbers (issue 11).
+
+    ``links`` are the link names, the ground first, then in order of first
+    appearance; ``number`` maps a name to its position there. The pairs that
+    touch link ``k`` are ``incident[offsets[k]:offsets[k + 1]]``, in file
+    order (a pair once at each of its ends), and ``neighbours`` holds, at
+    the same places, the number of the link at the pair's other end: one
+    tuple and two arrays of 4-byte numbers instead of a tuple per link.
+    """
+
+    links: tuple[str, ...]
+    number: dict[str, int]
+    offsets: array[int]
+    incident: tuple[Pair, ...]
+    neighbours: array[int]
+
+
+def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
+    """Number the links in one pass over the pairs, then group the pairs' ends by link."""
+    number = {ground: 0}
+    ends = array("i")  # the link numbers of a, b of each pair in turn
+    add_end, numbered = ends.append, number.setdefault
+    for p in pairs:
+        add_end(numbered(p.a, len(number)))
+        add_end(numbered(p.b, len(number)))
+    end_link = np.frombuffer(ends, dtype=np.intc)
+    order = np.argsort(end_link, kind="stable")  # the ends by link, each link's in file order
+    offsets = np.zeros(len(number) + 1, dtype=np.intc)
+    np.cumsum(np.bincount(end_link, minlength=len(number)), out=offsets[1:])
+    records = np.empty(len(pairs), dtype=object)
+    records[:] = pairs
+    return _LinkIndex(
+        tuple(number),
+        number,
+        array("i", offsets.tobytes()),
+        tuple(records[order // 2].tolist()),
+        array("i", end_link[order ^ 1].tobytes()),  # the other end of the same pair
+    )
+
+
+def _reached(index: _LinkIndex, start: int) -> bytearray:
+    """A flag per link number: 1 for the links reachable from link ``start`` through pairs."""
+    offsets, neighbours = index.offsets, index.neighbours
+    seen = bytearray(len(index.links))
+    seen[start] = 1
+    stack = [start]
+    while stack:
+        k = stack.pop()
+        for other in neighbours[offsets[k] : offsets[k + 1]]:
+            if not seen[other]:
+                seen[other] = 1
+                stack.append(other)
+    return seen
 
 
 def _shared_hinges(pairs: Iterable[Pair]) -> tuple[Hinge, ...]:

@@ -44,7 +44,6 @@ from __future__ import annotations
 
 import math
 import os
-import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -66,6 +65,7 @@ from ..model import (
 )
 from ..utils import paused_gc
 from ..validation import (
+    MAX_MAGNITUDE,
     check_driver_option,
     check_pair_links,
     check_pair_option,
@@ -86,7 +86,7 @@ __all__ = [
 
 #: the words that start a statement other than a pair (``name`` starts a title)
 _STATEMENTS = frozenset(("ground", "driver", "point", *(k.value for k in LoadKind)))
-_PAIR_LETTERS = frozenset(k.value for k in PairKind)
+_KIND_OF = {k.value: k for k in PairKind}
 
 
 def _number(text: str) -> float:
@@ -111,8 +111,13 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
     """
     found = _Statements()
     pairs = found.pairs
+    names = found.names
+    # pair k's id is the int that numbers line k (k is at most its own line): a large file
+    # then keeps one int a line, not two a pair (issue 11)
+    line_numbers: list[int] = []
     for line_no, raw in enumerate(lines, start=1):
-        text = raw.split("#", 1)[0]
+        line_numbers.append(line_no)
+        text = raw.split("#", 1)[0] if "#" in raw else raw
         tokens = text.split()
         if not tokens:
             continue
@@ -122,8 +127,8 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
             # name (no statement has R, P or H third); a `name` line is always a title
             if head == "name":
                 found.name = text.strip()[4:].strip()
-            elif head not in _STATEMENTS or (len(tokens) >= 3 and tokens[2] in _PAIR_LETTERS):
-                pairs.append(_pair(tokens, len(pairs) + 1, line_no))
+            elif head not in _STATEMENTS or (len(tokens) >= 3 and tokens[2] in _KIND_OF):
+                pairs.append(_pair(tokens, line_numbers[len(pairs)], line_no, names))
             else:
                 found.read_statement(tokens, line_no)
         except StatementError as exc:
@@ -154,6 +159,9 @@ class _Statements:
     points: dict[str, PointDef] = field(default_factory=dict)
     loads: list[Load] = field(default_factory=list)
     problems: list[EdgeListProblem] = field(default_factory=list)
+    #: each name of a link or point once: a link is named on ~3 lines of a large file, and
+    #: its pairs share one string (a local table, freed after the read, unlike sys.intern's)
+    names: dict[str, str] = field(default_factory=dict)
 
     def read_statement(self, tokens: list[str], line_no: int) -> None:
         """Read a ``ground``, ``driver``, ``point`` or load line; raise StatementError if bad."""
@@ -193,17 +201,64 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
     "unknown pair kind 'Q' (use R, P or H)"
     """
     try:
-        return _pair(tokens, pair_id, line_no), ""
+        return _pair(tokens, pair_id, line_no, {}), ""
     except StatementError as exc:
         return None, exc.reason
 
 
-def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
-    """The grammar of a pair line; the checks of its content are :func:`make_pair`'s."""
+def _pair(tokens: list[str], pair_id: int, line_no: int, names: dict[str, str]) -> Pair:
+    """The pair of a line, its names shared through ``names`` (see :class:`_Statements`).
+
+    The lines of nearly every large file, ``a b KIND [POINT]`` and ``a b P
+    POINT angle=DEG``, are built here with :func:`make_pair`'s checks for
+    them (two different links, a finite angle within
+    :data:`~structure.validation.MAX_MAGNITUDE`); any other line, and any
+    that fails those checks, is read by :func:`_pair_with_options`, which
+    says what is wrong.
+    """
+    size = len(tokens)
+    kind = _KIND_OF.get(tokens[2]) if 3 <= size <= 5 else None
+    if kind is None or tokens[0] == tokens[1]:
+        return _pair_with_options(tokens, pair_id, line_no, names)
+    a = names.setdefault(tokens[0], tokens[0])
+    b = names.setdefault(tokens[1], tokens[1])
+    if size == 3:
+        return Pair.plain(pair_id, kind, a, b, line_no=line_no)
+    point = tokens[3]
+    if "=" in point or point == "gear":
+        return _pair_with_options(tokens, pair_id, line_no, names)
+    point = names.setdefault(point, point)
+    if size == 4:
+        return Pair.plain(pair_id, kind, a, b, point, line_no=line_no)
+    angle = _slide_angle(tokens[4]) if kind is PairKind.P else None
+    if angle is None:
+        return _pair_with_options(tokens, pair_id, line_no, names)
+    return Pair.plain(pair_id, kind, a, b, point, angle, line_no)
+
+
+def _slide_angle(token: str) -> float | None:
+    """The degrees of an ``angle=DEG`` token that :func:`make_pair` takes, else None."""
+    key, _, text = token.partition("=")
+    if key != "angle":
+        return None
+    angle = _option_number(text)
+    return angle if abs(angle) <= MAX_MAGNITUDE else None  # NaN and infinities fail too
+
+
+def _pair_with_options(
+    tokens: list[str], pair_id: int, line_no: int, names: dict[str, str]
+) -> Pair:
+    """The grammar of any pair line; the checks of its content are :func:`make_pair`'s.
+
+    Raises
+    ------
+    StatementError
+        The first problem of the line, read from the left.
+    """
     if len(tokens) < 3:
         raise StatementError("a pair needs at least 'a b KIND'")
-    # names are shared, not copied per line: a link is named on ~3 lines of a large file
-    a, b = sys.intern(tokens[0]), sys.intern(tokens[1])
+    a = names.setdefault(tokens[0], tokens[0])
+    b = names.setdefault(tokens[1], tokens[1])
     kind = pair_kind(tokens[2])
     rest = tokens[3:]
     gear = kind is PairKind.H and "gear" in rest
@@ -211,7 +266,7 @@ def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
         rest = [t for t in rest if t != "gear"]
     point = None
     if rest and "=" not in rest[0]:
-        point, rest = sys.intern(rest[0]), rest[1:]
+        point, rest = names.setdefault(rest[0], rest[0]), rest[1:]
     options: dict[str, str] = {}
     for tok in rest:
         key, eq, value = tok.partition("=")
@@ -221,9 +276,6 @@ def _pair(tokens: list[str], pair_id: int, line_no: int) -> Pair:
         if key in options:
             raise _grammar_problem(kind, a, b, options, f"option {key!r} given twice")
         options[key] = value
-    if not options and not gear:  # most lines: make_pair's one check, without its dispatch
-        check_pair_links(a, b)
-        return Pair(pair_id, kind, a, b, point, line_no=line_no)
     if not options:
         return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no)
     typed = {key: _OPTION_READERS.get(key, str)(text) for key, text in options.items()}

@@ -30,15 +30,17 @@ import itertools
 import math
 import random
 import zlib
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from array import array
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
 from enum import Enum
+from operator import attrgetter
 
 import numpy as np
 
 from ..errors import EdgeListError, EdgeListProblem
 from ..kinds import PairKind
-from ..model import Hinge, Mechanism
+from ..model import Mechanism
 
 __all__ = [
     "ConstraintSystem",
@@ -79,36 +81,91 @@ class Unknown:
     size: int
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class ConstraintSystem:
-    """Rows and unknowns of a mechanism's constraint equations, as index lists.
+    """Rows and unknowns of a mechanism's constraint equations, as flat arrays.
 
-    ``row_adj[r]`` lists the unknown blocks row block ``r`` touches, in the
-    order the matching should try them; ``row_size[r]`` its number of scalar
-    rows; ``row_pair[r]`` the pair id it comes from (0 for drivers);
-    ``row_link[r]`` the link it belongs to (pin rows, drivers) or ``""``.
+    The unknown blocks are numbered by the moving links (``links``): link
+    ``i`` has its position at ``2i`` and its angle at ``2i + 1``; compound
+    pins (``pins``) follow. Row block ``r`` touches the unknown blocks
+    ``adj[adj_start[r]:adj_start[r + 1]]`` (``row_adj[r]``, in the order the
+    matching should try them); ``row_size[r]`` is its number of scalar rows,
+    ``row_pair[r]`` the pair id it comes from (0 for drivers), ``row_link[r]``
+    the link it belongs to (pin rows, drivers) or ``""``. Flat arrays, not a
+    tuple per row: a large mechanism has hundreds of thousands of rows.
     """
 
     mechanism: Mechanism
-    unknowns: tuple[Unknown, ...]
+    links: tuple[str, ...]
+    pins: tuple[str, ...]
     row_kind: tuple[RowKind, ...]
-    row_size: tuple[int, ...]
-    row_adj: tuple[tuple[int, ...], ...]
-    row_pair: tuple[int, ...]
+    row_size: array
+    adj_start: array
+    adj: array
+    row_pair: array
     row_link: tuple[str, ...]
-    pos: dict[str, int]
-    ang: dict[str, int]
-    pin: dict[str, int]
     n_pair_rows: int
+    _index: list = field(default_factory=list, repr=False)  # the link index, made on first use
+
+    @property
+    def unknowns(self) -> Sequence[Unknown]:
+        """Each unknown block as an :class:`Unknown` (made on access)."""
+        return _Unknowns(self.links, self.pins)
+
+    @property
+    def row_adj(self) -> Sequence[tuple[int, ...]]:
+        """The unknown blocks each row block touches, as tuples (made on access)."""
+        return _RowAdjacency(self.adj_start, self.adj)
+
+    @property
+    def pos(self) -> Mapping[str, int]:
+        """The position unknown of each moving link."""
+        return _Numbered(self._link_index(), 0)
+
+    @property
+    def ang(self) -> Mapping[str, int]:
+        """The angle unknown of each moving link."""
+        return _Numbered(self._link_index(), 1)
+
+    @property
+    def pin(self) -> Mapping[str, int]:
+        """The unknown of each compound pin (by its point)."""
+        return {point: 2 * len(self.links) + k for k, point in enumerate(self.pins)}
+
+    def _link_index(self) -> dict[str, int]:
+        if not self._index:
+            self._index.append({link: i for i, link in enumerate(self.links)})
+        return self._index[0]
+
+    @property
+    def n_unknowns(self) -> int:
+        """Number of unknown blocks."""
+        return 2 * len(self.links) + len(self.pins)
+
+    def row_codes(self) -> np.ndarray:
+        """Each row's kind as its position in :class:`RowKind` (numpy, for the large paths)."""
+        kinds = np.array(self.row_kind, dtype=object)
+        codes = np.zeros(len(kinds), dtype=np.int8)
+        for code, kind in enumerate(_KINDS[1:], start=1):
+            codes[kinds == kind] = code
+        return codes
+
+    def unknown_size(self, u: int) -> int:
+        """The size of unknown block ``u``: 1 for an angle, 2 for a position or a pin."""
+        return 1 if u & 1 and u < 2 * len(self.links) else 2
+
+    def unknown_sizes(self) -> list[int]:
+        """The size of each unknown block (2, 1 for each link; 2 for each pin)."""
+        return [2, 1] * len(self.links) + [2] * len(self.pins)
 
     @property
     def n_scalar_unknowns(self) -> int:
-        return sum(u.size for u in self.unknowns)
+        return 3 * len(self.links) + 2 * len(self.pins)
 
     def scalar_offsets(self) -> tuple[np.ndarray, np.ndarray]:
         """Offsets of each unknown block and each row block in scalar numbering."""
-        uo = np.array([0, *itertools.accumulate(u.size for u in self.unknowns)], dtype=int)
-        ro = np.array([0, *itertools.accumulate(self.row_size)], dtype=int)
+        uo = np.fromiter(itertools.accumulate(self.unknown_sizes(), initial=0), int)
+        ro = np.fromiter(itertools.accumulate(self.row_size, initial=0), int)
         return uo, ro
 
     def with_rows(
@@ -119,19 +176,100 @@ class ConstraintSystem:
         links: Sequence[str],
     ) -> ConstraintSystem:
         """The same system with extra (driver or probe) rows appended."""
+        adj = self.adj + array("i", itertools.chain.from_iterable(adjs))
+        adj_start = (
+            self.adj_start
+            + array("q", itertools.accumulate((len(a) for a in adjs), initial=len(self.adj)))[1:]
+        )
         return ConstraintSystem(
             self.mechanism,
-            self.unknowns,
+            self.links,
+            self.pins,
             self.row_kind + tuple(kinds),
-            self.row_size + tuple(sizes),
-            self.row_adj + tuple(adjs),
-            self.row_pair + (0,) * len(kinds),
+            self.row_size + array("b", sizes),
+            adj_start,
+            adj,
+            self.row_pair + array("i", [0]) * len(kinds),
             self.row_link + tuple(links),
-            self.pos,
-            self.ang,
-            self.pin,
             self.n_pair_rows,
+            self._index,
         )
+
+
+class _Unknowns(Sequence):
+    """The unknown blocks of a system as :class:`Unknown` records, made on access."""
+
+    __slots__ = ("_links", "_pins")
+
+    def __init__(self, links: tuple[str, ...], pins: tuple[str, ...]):
+        self._links, self._pins = links, pins
+
+    def __len__(self) -> int:
+        return 2 * len(self._links) + len(self._pins)
+
+    def __getitem__(self, u):  # type: ignore[override]
+        if isinstance(u, slice):
+            return [self[i] for i in range(*u.indices(len(self)))]
+        if u < 0:
+            u += len(self)
+        n = 2 * len(self._links)
+        if u >= n:
+            return Unknown("pin", self._pins[u - n], 2)
+        if u < 0:
+            raise IndexError(u)
+        return (
+            Unknown("ang", self._links[u >> 1], 1)
+            if u & 1
+            else Unknown("pos", self._links[u >> 1], 2)
+        )
+
+
+class _RowAdjacency(Sequence):
+    """``row_adj[r]``: the unknowns of row ``r`` as a tuple, read from the flat arrays."""
+
+    __slots__ = ("_adj", "_start")
+
+    def __init__(self, start: array, adj: array):
+        self._start, self._adj = start, adj
+
+    def __len__(self) -> int:
+        return len(self._start) - 1
+
+    def __getitem__(self, r):  # type: ignore[override]
+        if isinstance(r, slice):
+            return [self[i] for i in range(*r.indices(len(self)))]
+        if r < 0:
+            r += len(self)
+        if not 0 <= r < len(self):
+            raise IndexError(r)
+        return tuple(self._adj[self._start[r] : self._start[r + 1]])
+
+    def tolist(self) -> list[tuple[int, ...]]:
+        """Every row's unknowns as a tuple, in one pass."""
+        adj, start = self._adj, self._start
+        return [tuple(adj[a:b]) for a, b in itertools.pairwise(start)]
+
+
+class _Numbered(Mapping):
+    """``link -> 2·index + offset``: the position (0) or angle (1) unknown of each link."""
+
+    __slots__ = ("_index", "_offset")
+
+    def __init__(self, index: dict[str, int], offset: int):
+        self._index, self._offset = index, offset
+
+    def __getitem__(self, link: str) -> int:
+        return 2 * self._index[link] + self._offset
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._index)
+
+    def __len__(self) -> int:
+        return len(self._index)
+
+
+_KINDS = tuple(RowKind)
+_CODE = {kind: k for k, kind in enumerate(_KINDS)}
 
 
 def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> ConstraintSystem:
@@ -144,104 +282,229 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
     >>> s.n_scalar_unknowns, sum(s.row_size)
     (9, 9)
     """
-    rows = _Rows(mechanism)
-    compound = dict(mechanism.compound_hinges)  # a plain dict: looked up once per pair
-    done_points: set[str] = set()
-    body = rows.body
-    for p in mechanism.pairs:
-        if p.kind is _R:
-            h = compound.get(p.point) if p.point is not None else None
-            if h is None:
-                rows.add(_HINGE, 2, body(p.b) + body(p.a), p.id)
-            elif h.point not in done_points:
-                done_points.add(h.point)
-                rows.add_compound_hinge(h)
-        elif p.kind is _P:
-            angles = tuple(rows.ang[x] for x in (p.b, p.a) if x != rows.ground)
-            rows.add(_SLIDE_ANGLE, 1, angles, p.id)
-            rows.add(_SLIDE, 1, body(p.b) + body(p.a), p.id)
-        else:
-            rows.add(_CONTACT, 1, body(p.b) + body(p.a), p.id)
-    system = rows.system()
+    links = mechanism.moving_links
+    number = {link: i for i, link in enumerate(links)}
+    number[mechanism.ground] = -1
+    pins = _compound_rows(mechanism, number, 2 * len(links))
+    build = _system_by_numpy if len(mechanism.pairs) >= _NUMPY_PAIRS else _system_by_rows
+    system = build(mechanism, links, number, pins)
     if not drivers:
         return system
     return system.with_rows(*zip(*(_driver_row(system, d) for d in drivers), strict=True))
 
 
+#: from this many pairs on, the rows are laid out by numpy (below, one by one in Python,
+#: which costs less for the small mechanisms of a batch)
+_NUMPY_PAIRS = 256
+
+
+def _newest_first(a: int, b: int) -> tuple[int, ...]:
+    """The placement unknowns of links numbered ``a`` and ``b`` (-1: the ground), newest first.
+
+    Newest first: the matching then stays local to the group being added.
+    """
+    hi, lo = (a, b) if a > b else (b, a)
+    return (2 * hi + 1, 2 * hi, 2 * lo + 1, 2 * lo) if lo >= 0 else (2 * hi + 1, 2 * hi)
+
+
+def _system_by_rows(
+    mechanism: Mechanism, links: tuple[str, ...], number: Mapping[str, int], pins: _PinRows
+) -> ConstraintSystem:
+    """The pair rows laid out one by one (a small mechanism's)."""
+    compound = mechanism.compound_hinges
+    rows: list[tuple[int, RowKind, int, int, tuple[int, ...], str]] = []
+    for position, p in enumerate(mechanism.pairs):
+        key = position * _ROW_STRIDE
+        a, b = number[p.a], number[p.b]
+        if p.kind is _R:
+            if p.point is None or p.point not in compound:
+                rows.append((key, _HINGE, 2, p.id, _newest_first(a, b), ""))
+        elif p.kind is _P:
+            angles = tuple(2 * x + 1 for x in sorted((a, b), reverse=True) if x >= 0)
+            rows.append((key, _SLIDE_ANGLE, 1, p.id, angles, ""))
+            rows.append((key + 1, _SLIDE, 1, p.id, _newest_first(a, b), ""))
+        else:
+            rows.append((key, _CONTACT, 1, p.id, _newest_first(a, b), ""))
+    rows += zip(pins.key, itertools.repeat(_PIN), itertools.repeat(2), pins.pair, pins.adj,
+                pins.links)  # fmt: skip
+    rows.sort(key=lambda row: row[0])
+    adjs = [row[4] for row in rows]
+    return ConstraintSystem(
+        mechanism,
+        links,
+        pins.pins,
+        tuple(row[1] for row in rows),
+        array("b", [row[2] for row in rows]),
+        array("q", itertools.accumulate(map(len, adjs), initial=0)),
+        array("i", itertools.chain.from_iterable(adjs)),
+        array("i", [row[3] for row in rows]),
+        tuple(row[5] for row in rows),
+        len(rows),
+    )
+
+
+def _system_by_numpy(
+    mechanism: Mechanism, links: tuple[str, ...], number: Mapping[str, int], pins: _PinRows
+) -> ConstraintSystem:
+    """The pair rows laid out by numpy (a large mechanism's): one column per field."""
+    rows = _pair_rows(mechanism, number)
+    count = len(pins.key)
+    pin_adj = np.full((count, 4), -1, dtype=np.int64)
+    for k, adj in enumerate(pins.adj):
+        pin_adj[k, : len(adj)] = adj
+    order = np.argsort(
+        np.concatenate([rows.key, np.array(pins.key, dtype=np.int64)]), kind="stable"
+    )
+    touched = np.concatenate([rows.adj, pin_adj])[order]
+    present = touched >= 0
+    adj_start = np.zeros(len(order) + 1, dtype=np.int64)
+    np.cumsum(present.sum(axis=1), out=adj_start[1:])
+    codes = np.concatenate([rows.kind, np.full(count, _CODE[_PIN], dtype=np.int8)])[order]
+    row_link = [""] * len(order)
+    for position in np.flatnonzero(order >= len(rows.key)).tolist():
+        row_link[position] = pins.links[int(order[position]) - len(rows.key)]
+    sizes = np.concatenate([rows.size, np.full(count, 2, dtype=np.int64)])
+    pairs = np.concatenate([rows.pair, np.array(pins.pair, dtype=np.int64)])
+    return ConstraintSystem(
+        mechanism,
+        links,
+        pins.pins,
+        tuple(map(_KINDS.__getitem__, codes.tolist())),
+        _as_array("b", sizes[order]),
+        _as_array("q", adj_start),
+        _as_array("i", touched[present]),
+        _as_array("i", pairs[order]),
+        tuple(row_link),
+        len(order),
+    )
+
+
+def _as_array(typecode: str, values: np.ndarray) -> array:
+    """``values`` as a flat :class:`array.array` of ``typecode`` (indexing it gives Python ints)."""
+    out = array(typecode)
+    dtype = {"b": np.int8, "i": np.int32, "q": np.int64}[typecode]
+    out.frombytes(np.ascontiguousarray(values, dtype=dtype).tobytes())
+    return out
+
+
+@dataclass(frozen=True, slots=True)
 class _Rows:
-    """The unknowns and the pair rows of a constraint system, while it is being built."""
+    """Row blocks as numpy columns, before they are put in order.
 
-    def __init__(self, mechanism: Mechanism) -> None:
-        self.mechanism = mechanism
-        self.ground = mechanism.ground
-        self.unknowns: list[Unknown] = []
-        self.pos: dict[str, int] = {}
-        self.ang: dict[str, int] = {}
-        self.pin: dict[str, int] = {}
-        for link in mechanism.moving_links:
-            self.pos[link] = len(self.unknowns)
-            self.unknowns.append(Unknown("pos", link, 2))
-            self.ang[link] = len(self.unknowns)
-            self.unknowns.append(Unknown("ang", link, 1))
-        self.kinds: list[RowKind] = []
-        self.sizes: list[int] = []
-        self.adjs: list[tuple[int, ...]] = []
-        self.pair_of: list[int] = []
-        self.link_of: list[str] = []
+    ``key`` orders them (the pair's position, then the row's place in it);
+    ``adj`` holds up to four unknowns per row (-1 past its end).
+    """
 
-    def body(self, link: str) -> tuple[int, ...]:
-        """The unknowns of a link's placement (none for the ground)."""
-        return () if link == self.ground else (self.pos[link], self.ang[link])
+    key: np.ndarray
+    kind: np.ndarray
+    size: np.ndarray
+    pair: np.ndarray
+    adj: np.ndarray
 
-    def add(
-        self, kind: RowKind, size: int, adj: tuple[int, ...], pair_id: int, link: str = ""
-    ) -> None:
-        self.kinds.append(kind)
-        self.sizes.append(size)
-        # newest unknowns first: the matching then stays local to the group being added
-        self.adjs.append(tuple(sorted(adj, reverse=True)))
-        self.pair_of.append(pair_id)
-        self.link_of.append(link)
 
-    def add_compound_hinge(self, h: Hinge) -> None:
-        """Two rows per link at the pin; the pin is an unknown unless the ground is there."""
+#: rows one pair can give (a compound pin gives one per link; see _compound_rows)
+_ROW_STRIDE = 1 << 20
+
+
+def _pair_rows(mechanism: Mechanism, number: Mapping[str, int]) -> _Rows:
+    """The rows of every pair but the R pairs at a compound pin.
+
+    Newest unknowns first in each row: the matching then stays local to the
+    group being added.
+    """
+    pairs = mechanism.pairs
+    compound = mechanism.compound_hinges
+    n = len(pairs)
+    # one pass in C per field (map, attrgetter): a large mechanism has 10^5 pairs
+    kinds = np.array(list(map(attrgetter("kind"), pairs)), dtype=object)
+    kind = np.where(kinds == _P, 1, np.where(kinds == _H, 2, 0)).astype(np.int8)
+    if compound:
+        at_pin = np.fromiter(map(compound.__contains__, map(attrgetter("point"), pairs)), bool, n)
+        kind[at_pin & (kind == 0)] = 3
+    a = np.fromiter(map(number.__getitem__, map(attrgetter("a"), pairs)), np.int64, n)
+    b = np.fromiter(map(number.__getitem__, map(attrgetter("b"), pairs)), np.int64, n)
+    ids = np.fromiter(map(attrgetter("id"), pairs), np.int64, n)
+    hi, lo = np.maximum(a, b), np.minimum(a, b)
+    both = np.column_stack([2 * hi + 1, 2 * hi, 2 * lo + 1, 2 * lo])
+    both[lo < 0, 2:] = -1
+    angles = np.full((n, 4), -1, dtype=np.int64)
+    angles[:, 0], angles[:, 1] = 2 * hi + 1, np.where(lo < 0, -1, 2 * lo + 1)
+    position = np.arange(n, dtype=np.int64) * _ROW_STRIDE
+    plain = np.flatnonzero(kind < 3)  # hinges, contacts and the slide rows of P pairs
+    slides = np.flatnonzero(kind == _KIND_OF[_P])
+    row_kind = np.array([_CODE[_HINGE], _CODE[_SLIDE], _CODE[_CONTACT]], dtype=np.int8)
+    return _Rows(
+        key=np.concatenate([position[plain] + (kind[plain] == 1), position[slides]]),
+        kind=np.concatenate(
+            [row_kind[kind[plain]], np.full(len(slides), _CODE[_SLIDE_ANGLE], dtype=np.int8)]
+        ),
+        size=np.concatenate(
+            [np.where(kind[plain] == 0, 2, 1), np.ones(len(slides), dtype=np.int64)]
+        ),
+        pair=np.concatenate([ids[plain], ids[slides]]),
+        adj=np.concatenate([both[plain], angles[slides]]),
+    )
+
+
+_KIND_OF = {_R: 0, _P: 1, _H: 2}
+
+
+@dataclass(frozen=True, slots=True)
+class _PinRows:
+    """The rows of the links at compound pins, and the pins that are unknowns.
+
+    ``key[k]`` places row ``k`` among the pair rows (its pin's first R pair);
+    ``adj[k]`` its unknowns, newest first.
+    """
+
+    key: list[int]
+    pair: list[int]
+    adj: list[tuple[int, ...]]
+    links: list[str]
+    pins: tuple[str, ...]
+
+
+def _compound_rows(mechanism: Mechanism, number: Mapping[str, int], pins_start: int) -> _PinRows:
+    """Two rows per link at each compound pin, where the pin's first R pair is.
+
+    The pin is an unknown (numbered in the order of its first pair, from
+    ``pins_start`` on) unless the ground is there.
+    """
+    compound = mechanism.compound_hinges
+    out = _PinRows([], [], [], [], ())
+    if not compound:
+        return out
+    pins: list[str] = []
+    done: set[str] = set()
+    for position, p in enumerate(mechanism.pairs):
+        if p.kind is not _R or p.point is None or p.point in done or p.point not in compound:
+            continue
+        h = compound[p.point]
+        done.add(h.point)
         first_pair: dict[str, int] = {}
         for pid in h.pairs:
-            for link in self.mechanism.pair(pid).links:
+            for link in mechanism.pair(pid).links:
                 first_pair.setdefault(link, pid)
-        if self.ground in h.links:
-            for link in h.links:
-                if link != self.ground:
-                    self.add(_PIN, 2, self.body(link), first_pair[link], link)
-            return
-        pin = self.pin[h.point] = len(self.unknowns)
-        self.unknowns.append(Unknown("pin", h.point, 2))
-        for link in h.links:
-            self.add(_PIN, 2, (pin, *self.body(link)), first_pair[link], link)
-
-    def system(self) -> ConstraintSystem:
-        return ConstraintSystem(
-            self.mechanism,
-            tuple(self.unknowns),
-            tuple(self.kinds),
-            tuple(self.sizes),
-            tuple(self.adjs),
-            tuple(self.pair_of),
-            tuple(self.link_of),
-            self.pos,
-            self.ang,
-            self.pin,
-            len(self.kinds),
-        )
+        pin: tuple[int, ...] = ()
+        if mechanism.ground not in h.links:
+            pin = (pins_start + len(pins),)
+            pins.append(h.point)
+        for k, link in enumerate(x for x in h.links if x != mechanism.ground):
+            i = number[link]
+            out.key.append(position * _ROW_STRIDE + k)
+            out.pair.append(first_pair[link])
+            out.adj.append((*pin, 2 * i + 1, 2 * i))
+            out.links.append(link)
+    return _PinRows(out.key, out.pair, out.adj, out.links, tuple(pins))
 
 
 def _driver_row(system: ConstraintSystem, link: str) -> tuple[RowKind, int, tuple[int, ...], str]:
     m = system.mechanism
     joint = m.ground_joint(link)
     if joint is not None and joint.kind is _R:
-        return _DRIVER, 1, (system.ang[link],), link
+        return _DRIVER, 1, (2 * system.links.index(link) + 1,), link
     if joint is not None:
-        return _DRIVER, 1, (system.pos[link],), link
+        return _DRIVER, 1, (2 * system.links.index(link),), link
     raise EdgeListError(
         m.source,
         [EdgeListProblem(0, "", f"driver {link} is not joined to the ground by an R or P pair")],

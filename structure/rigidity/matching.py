@@ -20,22 +20,35 @@ algorithms", SIAM J. Comput. 1 (1972).
 
 from __future__ import annotations
 
+import itertools
 from array import array
 from collections.abc import Sequence
+from dataclasses import dataclass
 from itertools import repeat
 
 import numpy as np
 
-__all__ = ["Matcher", "irreducible_blocks", "strongly_connected"]
+__all__ = [
+    "NUMPY_ROWS",
+    "Assignment",
+    "FlatRows",
+    "Matcher",
+    "flat_rows",
+    "irreducible_blocks",
+    "strongly_connected",
+]
 
 
 class Matcher:
     """Incremental maximum b-matching of row blocks to unknown blocks.
 
-    ``assigned[r]`` are the unknown blocks row ``r`` is matched to (one entry
-    per unit) and ``owners[u]`` the rows matched to unknown ``u`` (one entry
-    per unit), both as tuples: most rows and unknowns hold one or two units,
-    and a tuple of them is half a list's size (an empty one costs nothing).
+    Rows and unknowns hold at most two units each (row blocks of one or two
+    scalars, unknown blocks of one or two coordinates). ``assigned[r]`` are
+    the unknown blocks row ``r`` is matched to (one entry per unit) and
+    ``owners[u]`` the rows matched to unknown ``u`` (one entry per unit), as
+    tuples made on access: the matcher itself keeps flat integer arrays, two
+    slots per row and per unknown, since a large mechanism has hundreds of
+    thousands of both.
 
     >>> m = Matcher([2, 1])              # unknown capacities
     >>> m.add_row((0, 1), 2), m.add_row((0,), 1), m.add_row((1,), 1)
@@ -45,33 +58,51 @@ class Matcher:
     """
 
     def __init__(self, capacities: Sequence[int]):
+        # lists, not arrays: read in the innermost loops, where a list is the fastest
         self.cap = list(capacities)
-        self.owners: list[tuple[int, ...]] = [()] * len(self.cap)
-        self.adj: list[tuple[int, ...]] = []
-        self.assigned: list[tuple[int, ...]] = []
-        self._useen = [0] * len(self.cap)
-        self._rseen: list[int] = []
+        if max(self.cap, default=0) > 2:
+            raise ValueError("unknown blocks hold at most two units")
+        n = len(self.cap)
+        self._load = [0] * n
+        self._owner = [-1] * (2 * n)  # rows on unit slots 2u, 2u + 1
+        self._start = array("q", [0])
+        self._adj = array("i")
+        self._units = array("i")  # unknowns on row slots 2r, 2r + 1 (-1: none)
+        self._useen = array("i", bytes(4 * n))
+        self._rseen = array("i")
         self._stamp = 0
+
+    @property
+    def assigned(self) -> Assignment:
+        """The unknown blocks each row is matched to, one entry per unit."""
+        return Assignment(self._units)
+
+    @property
+    def owners(self) -> list[tuple[int, ...]]:
+        """The rows matched to each unknown block, one entry per unit."""
+        o = self._owner
+        return [tuple(o[2 * u : 2 * u + k]) for u, k in enumerate(self._load)]
 
     @property
     def load(self) -> list[int]:
         """Units of each unknown block matched so far."""
-        return [len(rows) for rows in self.owners]
+        return list(self._load)
 
-    def add_row(self, adj: tuple[int, ...], size: int) -> int:
-        """Add a row block and match as many of its ``size`` units as possible.
+    def add_row(self, adj: Sequence[int], size: int) -> int:
+        """Add a row block and match as many of its ``size`` (at most 2) units as possible.
 
         Returns the number of units matched; the others stay unmatched for good.
         """
-        r = len(self.adj)
-        self.adj.append(adj)
-        self.assigned.append(())
+        r = len(self._rseen)
+        self._adj.extend(adj)
+        self._start.append(len(self._adj))
+        self._units.extend((-1, -1))
         self._rseen.append(0)
-        owners, cap = self.owners, self.cap
+        load, cap = self._load, self.cap
         got = 0
         for _ in range(size):
             for u in adj:  # cheap first try: a free unit next door
-                if len(owners[u]) < cap[u]:
+                if load[u] < cap[u]:
                     self._take(r, u)
                     got += 1
                     break
@@ -81,16 +112,50 @@ class Matcher:
                 got += 1
         return got
 
-    def remove_row(self, r: int) -> None:
-        """Unmatch row block ``r`` (it keeps its index but touches nothing)."""
-        for u in self.assigned[r]:
-            self.owners[u] = _without(self.owners[u], r)
-        self.assigned[r] = ()
-        self.adj[r] = ()
+    def add_rows(self, adj_start: array, adj: array, sizes: Sequence[int]) -> dict[int, int]:
+        """Add many row blocks at once, as :meth:`add_row` one after another would.
+
+        ``adj[adj_start[k]:adj_start[k + 1]]`` are the unknowns of the ``k``-th
+        new row and ``sizes[k]`` its size. Returns ``{row: units left
+        unmatched}`` for the rows not wholly matched. One loop with the
+        cheap first try inlined: a large mechanism has hundreds of thousands
+        of rows, and most of them find a free unit next door.
+        """
+        first = len(self._rseen)
+        n = len(sizes)
+        base = len(self._adj)
+        self._adj.extend(adj[adj_start[0] : adj_start[n]])
+        shift = base - adj_start[0]
+        self._start.extend(
+            adj_start[1 : n + 1] if not shift else (x + shift for x in adj_start[1 : n + 1])
+        )
+        self._units.extend(array("i", [-1]) * (2 * n))
+        self._rseen.extend(array("i", bytes(4 * n)))
+        load, cap, owner, units = self._load, self.cap, self._owner, self._units
+        start, flat, augment = self._start, self._adj, self._augment
+        unmatched: dict[int, int] = {}
+        for r in range(first, first + n):
+            size = sizes[r - first]
+            got = 0
+            while got < size:
+                for u in flat[start[r] : start[r + 1]]:
+                    if load[u] < cap[u]:
+                        owner[2 * u + load[u]] = r
+                        load[u] += 1
+                        units[2 * r + got] = u
+                        break
+                else:
+                    if not augment(r):
+                        unmatched[r] = size - got
+                        break
+                got += 1
+        return unmatched
 
     def _take(self, r: int, u: int) -> None:
-        self.owners[u] += (r,)
-        self.assigned[r] += (u,)
+        self._owner[2 * u + self._load[u]] = r
+        self._load[u] += 1
+        units = self._units
+        units[2 * r + (units[2 * r] != -1)] = u
 
     def _augment(self, r0: int) -> bool:
         """Find a shortest augmenting path from row ``r0`` (breadth first) and flip it.
@@ -99,15 +164,22 @@ class Matcher:
         is almost always in the group being attached, a few steps away,
         while a depth-first search can wander through the whole mechanism.
         """
+        adj, start, owner, load, cap = self._adj, self._start, self._owner, self._load, self.cap
+        # the usual case first: a row next door gives way and takes a free unit of its own
+        # (what the search below finds first when the path is that short)
+        enqueued: dict[int, int] = {}  # row -> the unit it was reached through
+        for u in adj[start[r0] : start[r0 + 1]]:
+            for r in owner[2 * u : 2 * u + load[u]]:
+                if r != r0 and r not in enqueued:
+                    enqueued[r] = u
+        for r, u in enqueued.items():
+            for free_u in adj[start[r] : start[r + 1]]:
+                if load[free_u] < cap[free_u]:
+                    self._flip(r0, r, free_u, {u: r0}, {r: u})
+                    return True
         self._stamp += 1
         stamp = self._stamp
-        useen, rseen, adj, owners, cap = (
-            self._useen,
-            self._rseen,
-            self.adj,
-            self.owners,
-            self.cap,
-        )
+        useen, rseen = self._useen, self._rseen
         rseen[r0] = stamp
         reached_by: dict[int, int] = {}  # unknown -> row that reached it
         came_through: dict[int, int] = {}  # row -> unknown it was reached through
@@ -115,15 +187,15 @@ class Matcher:
         while frontier:
             following: list[int] = []
             for r in frontier:
-                for u in adj[r]:
+                for u in adj[start[r] : start[r + 1]]:
                     if useen[u] == stamp:
                         continue
                     useen[u] = stamp
                     reached_by[u] = r
-                    if len(owners[u]) < cap[u]:
+                    if load[u] < cap[u]:
                         self._flip(r0, r, u, reached_by, came_through)
                         return True
-                    for r2 in owners[u]:
+                    for r2 in owner[2 * u : 2 * u + load[u]]:
                         if rseen[r2] != stamp:
                             rseen[r2] = stamp
                             came_through[r2] = u
@@ -140,36 +212,89 @@ class Matcher:
         came_through: dict[int, int],
     ) -> None:
         # r takes the free unit; each row on the path gives its unit to the row before it
-        self._take(r, free_u)
-        owners, assigned = self.owners, self.assigned
+        owner, units = self._owner, self._units
+        owner[2 * free_u + self._load[free_u]] = r
+        self._load[free_u] += 1
+        received = free_u
         while r != r0:
             u = came_through[r]
             taker = reached_by[u]
-            owners[u] = (*_without(owners[u], r), taker)
-            assigned[r] = _without(assigned[r], u)
-            assigned[taker] += (u,)
-            r = taker
+            # u's rows less r (the others move up), then the taker last
+            k = 2 * u
+            if owner[k] == r and self.cap[u] == 2:
+                owner[k] = owner[k + 1]
+                owner[k + 1] = taker
+            elif owner[k] == r:
+                owner[k] = taker
+            else:
+                owner[k + 1] = taker
+            # r's units less u (the first one), then the unit it received last
+            k = 2 * r
+            if units[k] == u:
+                units[k] = units[k + 1]
+            units[k + 1] = -1
+            units[k + (units[k] != -1)] = received
+            received, r = u, taker
+        units[2 * r + (units[2 * r] != -1)] = received
 
     @property
     def free_units(self) -> list[tuple[int, int]]:
         """``(unknown block, free units)`` for every block not fully matched."""
         return [
-            (u, c - len(rows))
-            for u, (c, rows) in enumerate(zip(self.cap, self.owners, strict=True))
-            if len(rows) < c
+            (u, c - k) for u, (c, k) in enumerate(zip(self.cap, self._load, strict=True)) if k < c
         ]
 
 
-def _without(items: tuple[int, ...], item: int) -> tuple[int, ...]:
-    """``items`` less the first ``item`` (as ``list.remove`` does)."""
-    k = items.index(item)
-    return items[:k] + items[k + 1 :]
+class Assignment(Sequence):
+    """``assignment[r]``: the unknown blocks row ``r`` is matched to, one entry per unit.
+
+    A view of two slots per row in one flat array (-1 for an empty slot),
+    made into a tuple on access.
+    """
+
+    __slots__ = ("units",)
+
+    def __init__(self, units: array):
+        self.units = units
+
+    def __len__(self) -> int:
+        return len(self.units) // 2
+
+    def __getitem__(self, r):  # type: ignore[override]
+        if isinstance(r, slice):
+            return [self[i] for i in range(*r.indices(len(self)))]
+        if r < 0:
+            r += len(self)
+        if not 0 <= r < len(self):
+            raise IndexError(r)
+        a, b = self.units[2 * r], self.units[2 * r + 1]
+        return () if a < 0 else (a,) if b < 0 else (a, b)
+
+    def tolist(self) -> list[tuple[int, ...]]:
+        """Every row's units as a tuple, in one pass."""
+        u = self.units
+        return [
+            () if a < 0 else (a,) if b < 0 else (a, b)
+            for a, b in zip(u[0::2], u[1::2], strict=True)
+        ]
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, Assignment):
+            return self.units == other.units
+        return isinstance(other, Sequence) and list(self) == [tuple(x) for x in other]
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"Assignment({list(self)!r})"
 
 
 def irreducible_blocks(
     adj: Sequence[tuple[int, ...]],
     assigned: Sequence[Sequence[int]],
     n_unknowns: int,
+    *,
+    flat: FlatRows | None = None,
 ) -> list[list[int]]:
     """Strongly connected components of the matched dependency digraph, sources first.
 
@@ -179,11 +304,146 @@ def irreducible_blocks(
     order is deterministic. (For a digraph given by its edges,
     :func:`strongly_connected`.)
 
+    ``flat`` is the same rows as a :class:`FlatRows` (a large system's), when made.
+
     >>> irreducible_blocks([(0,), (0, 1), (1, 2), (2, 1)], [[0], [1], [2], [1]], 3)
     [[0], [1, 2]]
     """
-    start, flat = _adjacency_arrays(*_dependency_edges(adj, assigned), n_unknowns)
-    return _strongly_connected(start, flat, n_unknowns)
+    if flat is None:
+        start, successors = _adjacency_arrays(*_dependency_edges(adj, assigned), n_unknowns)
+        return _strongly_connected(start, successors, n_unknowns)
+    start, successors = _adjacency_arrays(*_dependency_edges_flat(flat), n_unknowns)
+    return Blocks.of(_strongly_connected(start, successors, n_unknowns))
+
+
+class Blocks(Sequence):
+    """Irreducible blocks held in two flat arrays: ``blocks[b]`` is a sorted list of unknowns.
+
+    ``units[start[b]:start[b + 1]]`` are block ``b``'s unknowns. A large
+    mechanism has hundreds of thousands of blocks: a list per block (and an
+    int object per unknown) would cost ten times the memory.
+    """
+
+    __slots__ = ("start", "units")
+
+    def __init__(self, units: array, start: array):
+        self.units, self.start = units, start
+
+    @classmethod
+    def of(cls, blocks: Sequence[Sequence[int]]) -> Blocks:
+        """The blocks of a list of lists."""
+        units = array("i", itertools.chain.from_iterable(blocks))
+        return cls(units, array("q", itertools.accumulate(map(len, blocks), initial=0)))
+
+    def __len__(self) -> int:
+        return len(self.start) - 1
+
+    def __getitem__(self, b):  # type: ignore[override]
+        if isinstance(b, slice):
+            return [self[i] for i in range(*b.indices(len(self)))]
+        if b < 0:
+            b += len(self)
+        if not 0 <= b < len(self):
+            raise IndexError(b)
+        return self.units[self.start[b] : self.start[b + 1]].tolist()
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Sequence) and list(self) == [list(x) for x in other]
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"Blocks({list(self)!r})"
+
+
+def block_arrays(blocks: Sequence[Sequence[int]]) -> tuple[np.ndarray, np.ndarray]:
+    """``(units, start)``: the blocks' unknowns one after another, and where each block starts."""
+    if isinstance(blocks, Blocks):
+        return (
+            np.frombuffer(blocks.units, dtype=np.int32).astype(np.int64),
+            np.frombuffer(blocks.start, dtype=np.int64),
+        )
+    count = np.fromiter(map(len, blocks), np.int64, len(blocks))
+    start = np.zeros(len(blocks) + 1, dtype=np.int64)
+    np.cumsum(count, out=start[1:])
+    return np.fromiter(itertools.chain.from_iterable(blocks), np.int64, int(start[-1])), start
+
+
+#: from this many rows on, the rows are also held as flat numpy arrays (:class:`FlatRows`)
+NUMPY_ROWS = 2048
+
+
+@dataclass(frozen=True, slots=True)
+class FlatRows:
+    """A large system's rows and matching as flat integer arrays.
+
+    ``adj[adj_start[r]:adj_start[r + 1]]`` are the unknowns row ``r``
+    touches; ``units`` lists, row after row, the distinct unknowns each row
+    is matched to, in the order :func:`_dependency_edges` takes them, and
+    ``unit_row`` the row of each; ``matched[r]`` counts the units of row ``r``
+    (repeats included). One array each instead of a tuple per row: a large
+    mechanism has hundreds of thousands of rows.
+    """
+
+    adj_start: np.ndarray
+    adj: np.ndarray
+    unit_row: np.ndarray
+    units: np.ndarray
+    matched: np.ndarray
+
+
+def flat_rows(adj_start: array, adj: array, units: array) -> FlatRows:
+    """A :class:`FlatRows` of rows given as flat arrays.
+
+    ``adj[adj_start[r]:adj_start[r + 1]]`` are the unknowns row ``r``
+    touches, ``units[2r]`` and ``units[2r + 1]`` those it is matched to (-1
+    for none; see :class:`Assignment`). Two different units of a row are
+    taken in the order of a set of them, as :func:`_dependency_edges` does.
+    """
+    start = np.frombuffer(adj_start, dtype=np.int64)
+    slots = np.frombuffer(units, dtype=np.int32).reshape(-1, 2).astype(np.int64)
+    first, second = slots[:, 0].copy(), slots[:, 1].copy()
+    matched = ((first >= 0).astype(np.int8) + (second >= 0)).astype(np.int8)
+    two = np.flatnonzero((second >= 0) & (second != first))
+    if len(two):
+        swap = ~_set_keeps_order(first[two], second[two])
+        first[two[swap]], second[two[swap]] = second[two[swap]], first[two[swap]]
+    rows = np.concatenate([np.flatnonzero(first >= 0), two])
+    distinct = np.concatenate([first[first >= 0], second[two]])
+    order = np.argsort(rows * 2 + (np.arange(len(rows)) >= len(rows) - len(two)), kind="stable")
+    return FlatRows(
+        start, np.frombuffer(adj, dtype=np.int32), rows[order], distinct[order], matched
+    )
+
+
+def _set_keeps_order(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Whether ``tuple({a, b})`` is ``(a, b)``, for each pair of distinct non-negative ints.
+
+    A two-element set lists its members by their slots in a table of 8:
+    ``a`` sits at ``a & 7``; ``b`` at ``b & 7`` unless that is taken, then
+    wherever CPython's probe sequence (``i = (5 i + 1 + perturb) & 7``, the
+    perturbation starting at ``b`` and shifted right by 5 each step) first
+    finds free.
+    """
+    slot_a = a & 7
+    slot_b = b & 7
+    perturb = b.copy()
+    pending = slot_b == slot_a
+    while pending.any():
+        perturb[pending] >>= 5
+        slot_b[pending] = (slot_b[pending] * 5 + 1 + perturb[pending]) & 7
+        pending &= slot_b == slot_a
+    return slot_a < slot_b
+
+
+def _dependency_edges_flat(rows: FlatRows) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_dependency_edges` of a :class:`FlatRows`, the same edges in the same order."""
+    begin = rows.adj_start[rows.unit_row]
+    counts = rows.adj_start[rows.unit_row + 1] - begin
+    total = int(counts.sum())
+    # each unit's row's adjacency, one after another
+    at = np.repeat(begin - np.cumsum(counts) + counts, counts) + np.arange(total)
+    return rows.adj[at], np.repeat(rows.units, counts)
 
 
 def strongly_connected(

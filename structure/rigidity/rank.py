@@ -22,6 +22,7 @@ its dependent set.
 
 from __future__ import annotations
 
+import itertools
 import math
 from array import array
 from collections.abc import Callable, Iterable, Sequence
@@ -38,7 +39,15 @@ from .constraints import (
     random_realization,
     row_entries,
 )
-from .matching import Matcher, irreducible_blocks
+from .matching import (
+    NUMPY_ROWS,
+    Assignment,
+    FlatRows,
+    Matcher,
+    block_arrays,
+    flat_rows,
+    irreducible_blocks,
+)
 
 __all__ = [
     "DENSE_LIMIT",
@@ -86,7 +95,7 @@ class RankAnalysis:
     rank: int
     dof: int
     free: list[tuple[int, int]]
-    blocks: list[list[int]] | None
+    blocks: Sequence[Sequence[int]] | None
     assigned: Sequence[Sequence[int]] = field(repr=False)
     method: str
 
@@ -106,12 +115,8 @@ class RankAnalysis:
 
 
 def _match(system: ConstraintSystem) -> tuple[Matcher, dict[int, int]]:
-    matcher = Matcher([u.size for u in system.unknowns])
-    unmatched: dict[int, int] = {}
-    for r, (adj, size) in enumerate(zip(system.row_adj, system.row_size, strict=True)):
-        got = matcher.add_row(adj, size)
-        if got < size:
-            unmatched[r] = size - got
+    matcher = Matcher(system.unknown_sizes())
+    unmatched = matcher.add_rows(system.adj_start, system.adj, system.row_size)
     return matcher, unmatched
 
 
@@ -127,6 +132,7 @@ def _singular_blocks(
     assigned: Sequence[Sequence[int]],
     seed: int,
     which: Sequence[int] | None = None,
+    flat: FlatRows | None = None,
 ) -> list[int]:
     """Indices of the irreducible blocks whose square Jacobian is numerically singular.
 
@@ -141,10 +147,18 @@ def _singular_blocks(
     nonzero at one point is not identically zero), so it is remembered across
     calls (:data:`_REGULAR_PATTERNS`); singular verdicts are never remembered,
     since a random pose may be near-singular by chance and is checked again.
+    ``flat`` holds the rows as flat arrays (a large system): the blocks are
+    then sorted by pattern with numpy (:func:`_singular_blocks_by_pattern`).
     """
     offsets, _ = system.scalar_offsets()
     uo = _int_array(offsets)
-    rows_of = _rows_of_blocks(system, blocks, assigned)
+    if flat is not None:
+        layout = _BlockLayout.of(system, blocks, flat)
+        rows_of = layout.rows_of
+        if which is None:
+            return _singular_blocks_by_pattern(system, blocks, assigned, seed, layout, uo)
+    else:
+        rows_of = _rows_of_blocks(system, blocks, assigned)
     representative: dict[tuple, int] = {}
     evaluated: list[tuple[int, list[list[float]]]] = []
     bad: list[int] = []
@@ -174,6 +188,181 @@ def _singular_blocks(
             bad.extend(_repeats_of(system, blocks, assigned, rows_of, representative, singular))
         _remember_regular(pattern for pattern, b in representative.items() if b not in singular)
     return sorted(bad)
+
+
+@dataclass(frozen=True, slots=True)
+class _BlockLayout:
+    """A large system's blocks as flat arrays: their units, their rows, each row's pattern code.
+
+    ``units[unit_start[b]:unit_start[b + 1]]`` are block ``b``'s unknowns and
+    ``rows[row_start[b]:row_start[b + 1]]`` the rows matched into it, in
+    order; ``codes[k]`` describes row ``rows[k]`` as :func:`_block_pattern`
+    does (kind, units matched, the local number of each unknown it touches,
+    its shared point's local number), as integers.
+    """
+
+    units: np.ndarray
+    unit_start: np.ndarray
+    rows: np.ndarray
+    row_start: np.ndarray
+    codes: np.ndarray
+
+    @classmethod
+    def of(cls, system: ConstraintSystem, blocks: list[list[int]], flat: FlatRows) -> _BlockLayout:
+        n_blocks = len(blocks)
+        units, unit_start = block_arrays(blocks)
+        unit_count = np.diff(unit_start)
+        block_of = np.empty(system.n_unknowns, dtype=np.int64)
+        block_of[units] = np.repeat(np.arange(n_blocks), unit_count)
+        local = np.empty(system.n_unknowns, dtype=np.int64)
+        local[units] = np.arange(len(units)) - np.repeat(unit_start[:-1], unit_count)
+        # every unit of a row lies in one block: its first unit's tells
+        first = np.flatnonzero(np.r_[True, flat.unit_row[1:] != flat.unit_row[:-1]])
+        matched_rows = flat.unit_row[first]
+        row_block = block_of[flat.units[first]]
+        order = np.argsort(row_block, kind="stable")
+        rows, row_block = matched_rows[order], row_block[order]
+        row_start = np.searchsorted(row_block, np.arange(n_blocks + 1))
+        codes = _row_codes(system, flat, rows, row_block, block_of, local)
+        return cls(units, unit_start, rows, row_start, codes)
+
+    def rows_of(self, b: int) -> Sequence[int]:
+        return self.rows[self.row_start[b] : self.row_start[b + 1]].tolist()
+
+
+_KIND_CODE = {kind: k for k, kind in enumerate(RowKind)}
+
+
+def _row_codes(
+    system: ConstraintSystem,
+    flat: FlatRows,
+    rows: np.ndarray,
+    row_block: np.ndarray,
+    block_of: np.ndarray,
+    local: np.ndarray,
+) -> np.ndarray:
+    """One line of integers per row (in block order) that :func:`_block_pattern` tells apart.
+
+    Kind, units matched, the local number of each unknown touched (-1 in
+    another block, -2 past the row's end) and the local number of its
+    shared point (pin or P pair), counted in order of first use in the block.
+    """
+    kind = system.row_codes()
+    begin, end = flat.adj_start[rows], flat.adj_start[rows + 1]
+    width = int((end - begin).max(initial=0))
+    touched = np.full((len(rows), width), -2, dtype=np.int64)
+    for k in range(width):
+        has = begin + k < end
+        u = flat.adj[begin[has] + k]
+        touched[has, k] = np.where(block_of[u] == row_block[has], local[u], -1)
+    shared = _shared_numbers(system, rows, row_block, kind)
+    return np.column_stack([kind[rows], flat.matched[rows], touched, shared])
+
+
+def _shared_numbers(
+    system: ConstraintSystem, rows: np.ndarray, row_block: np.ndarray, kind: np.ndarray
+) -> np.ndarray:
+    """Each row's shared point (a pin, or its pair) numbered in order of first use in its block."""
+    pair = np.asarray(system.row_pair, dtype=np.int64)[rows]
+    key = 2 * pair + 1
+    pins = np.flatnonzero(kind[rows] == _KIND_CODE[RowKind.PIN])
+    if len(pins):
+        point_of = system.mechanism.pair
+        names = [point_of(pid).point for pid in pair[pins].tolist()]
+        number = {name: k for k, name in enumerate(dict.fromkeys(names))}
+        key[pins] = 2 * np.array([number[name] for name in names], dtype=np.int64)
+    position = np.arange(len(rows))
+    by_key = np.lexsort((position, key, row_block))
+    new = np.r_[True, (row_block[by_key][1:] != row_block[by_key][:-1])
+                | (key[by_key][1:] != key[by_key][:-1])]  # fmt: skip
+    first_use = np.empty(len(rows), dtype=np.int64)
+    first_use[by_key] = np.maximum.accumulate(np.where(new, position[by_key], 0))
+    # a block's first uses, in row order, are numbered 0, 1, ...
+    is_first = first_use == position
+    before = np.cumsum(is_first) - is_first
+    block_first = np.searchsorted(row_block, row_block)  # each row's block's first row
+    return before[first_use] - before[block_first]
+
+
+def _singular_blocks_by_pattern(
+    system: ConstraintSystem,
+    blocks: list[list[int]],
+    assigned: Sequence[Sequence[int]],
+    seed: int,
+    layout: _BlockLayout,
+    uo: Sequence[int],
+) -> list[int]:
+    """:func:`_singular_blocks` of every block, the patterns told apart by numpy.
+
+    Blocks of one size (units, rows) are stacked as lines of integers (unit
+    sizes, then each row's code) and sorted once; each distinct line is a
+    pattern, judged with its first block as the plain path does.
+    """
+    sizes = np.array(system.unknown_sizes(), dtype=np.int64)
+    n_units = np.diff(layout.unit_start)
+    n_rows = np.diff(layout.row_start)
+    trivial = (n_units == 1) & (n_rows == 1)
+    trivial[trivial] = np.isin(
+        layout.codes[layout.row_start[:-1][trivial], 0],
+        [_KIND_CODE[RowKind.DRIVER], _KIND_CODE[RowKind.PROBE]],
+    )
+    pattern_of = np.full(len(blocks), -1, dtype=np.int64)
+    firsts: list[int] = []
+    for nu, nr in sorted(
+        set(zip(n_units[~trivial].tolist(), n_rows[~trivial].tolist(), strict=True))
+    ):
+        members = np.flatnonzero((n_units == nu) & (n_rows == nr) & ~trivial)
+        lines = np.hstack([
+            sizes[layout.units[layout.unit_start[members, None] + np.arange(nu)]],
+            layout.codes[layout.row_start[members, None] + np.arange(nr)].reshape(len(members), -1),
+        ])  # fmt: skip
+        first, inverse = _distinct_lines(lines)
+        pattern_of[members] = len(firsts) + inverse
+        firsts.extend(members[first].tolist())
+    representative: dict[tuple, int] = {}
+    evaluated: list[tuple[int, list[list[float]]]] = []
+    bad: list[int] = []
+    realization: Realization | None = None
+    for b in sorted(firsts):
+        units, rows = blocks[b], layout.rows_of(b)
+        pattern = _block_pattern(system, units, rows, assigned)
+        if pattern in _REGULAR_PATTERNS:
+            continue
+        representative[pattern] = b
+        if realization is None:
+            realization = random_realization(system, seed)
+        a = _block_matrix(system, realization, units, rows, assigned, uo)
+        if a is None:
+            bad.append(b)
+        else:
+            evaluated.append((b, a))
+    if evaluated:
+        ratios = _singular_ratios([a for _, a in evaluated]).tolist()
+        bad.extend(b for (b, _), x in zip(evaluated, ratios, strict=True) if x <= _RANK_TOL)
+    singular = set(bad)
+    if singular:  # every block of a singular pattern is singular
+        hit = np.isin(pattern_of, pattern_of[sorted(singular)])
+        bad = np.flatnonzero(hit).tolist()
+    _remember_regular(pattern for pattern, b in representative.items() if b not in singular)
+    return sorted(bad)
+
+
+def _distinct_lines(lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The first index of each distinct line of ``lines``, and each line's distinct number.
+
+    The lines are told apart by a 64-bit hash first (sorting one column is
+    far cheaper than sorting whole lines); the grouping is then checked line
+    by line, and any collision sends the lines to an exact sort.
+    """
+    weights = np.random.default_rng(len(lines[0])).integers(1, 2**63, len(lines[0]), np.uint64)
+    with np.errstate(over="ignore"):
+        hashed = (lines.astype(np.uint64) * weights).sum(axis=1, dtype=np.uint64)
+    _, first, inverse = np.unique(hashed, return_index=True, return_inverse=True)
+    inverse = inverse.reshape(-1)
+    if not np.array_equal(lines, lines[first[inverse]]):
+        _, first, inverse = np.unique(lines, axis=0, return_index=True, return_inverse=True)
+        inverse = inverse.reshape(-1)
+    return first, inverse
 
 
 def _trivially_regular(system: ConstraintSystem, units: Sequence[int], rows: Sequence[int]) -> bool:
@@ -254,7 +443,7 @@ def _rows_of_blocks(
     Held as two flat integer arrays (each block's rows are a slice of one),
     not a list per block: a large mechanism has hundreds of thousands of blocks.
     """
-    block_of = array("i", [0]) * len(system.unknowns)
+    block_of = array("i", [0]) * system.n_unknowns
     for b, units in enumerate(blocks):
         for u in units:
             block_of[u] = b
@@ -291,13 +480,13 @@ def _block_pattern(
     """What a block's regularity depends on: sizes, row kinds, local incidences, shared points."""
     local = {u: i for i, u in enumerate(units)}
     shared: dict[tuple[int, object], int] = {}
-    row_kind, row_adj, row_pair = system.row_kind, system.row_adj, system.row_pair
+    row_kind, row_pair, adj, start = system.row_kind, system.row_pair, system.adj, system.adj_start
     pin_kind = RowKind.PIN  # a local: enum attribute lookups are slow in the loop below
     pattern = tuple(
         (
             row_kind[r],
             len(assigned[r]),
-            tuple(local.get(u, -1) for u in row_adj[r]),
+            tuple(local.get(u, -1) for u in adj[start[r] : start[r + 1]]),
             # rows that share a point (one pin, one P pair) share it in the pattern
             shared.setdefault(
                 (0, system.mechanism.pair(row_pair[r]).point)
@@ -308,7 +497,7 @@ def _block_pattern(
         )
         for r in rows
     )
-    return (tuple(system.unknowns[u].size for u in units), pattern)
+    return (tuple(map(system.unknown_size, units)), pattern)
 
 
 def _block_matrix(
@@ -322,7 +511,7 @@ def _block_matrix(
     """The block's square Jacobian at ``realization``, or None when its rows do not fill it."""
     cols: dict[int, int] = {}
     for u in units:
-        for k in range(system.unknowns[u].size):
+        for k in range(system.unknown_size(u)):
             cols[uo[u] + k] = len(cols)
     size = len(cols)
     a = [[0.0] * size for _ in range(size)]
@@ -357,18 +546,30 @@ def generic_rank(system: ConstraintSystem, seed: int = 20261121) -> RankAnalysis
     """
     matcher, unmatched = _match(system)
     free = matcher.free_units
-    rank = sum(len(a) for a in matcher.assigned[: system.n_pair_rows])
-    # the matching's tuples are kept as they are; the rest of the matcher goes now,
-    # before the blocks need memory (a large mechanism's matcher is tens of MB)
-    assigned: list[tuple[int, ...]] = matcher.assigned
-    del matcher
+    units = matcher.assigned.units
+    del matcher  # the matching alone is kept, as one flat array
+    rank = len(units[: 2 * system.n_pair_rows]) - units[: 2 * system.n_pair_rows].count(-1)
     probed = _probe_system(system, free)
-    assigned.extend((u,) * k for u, k in free)
-    blocks = irreducible_blocks(probed.row_adj, assigned, len(system.unknowns))
-    suspects = _singular_blocks(probed, blocks, assigned, seed)
+    # each probe row is matched to the free units it fixes
+    assigned = Assignment(
+        units + array("i", itertools.chain.from_iterable((u, u if k == 2 else -1) for u, k in free))
+    )
+    del units
+    flat = (
+        flat_rows(probed.adj_start, probed.adj, assigned.units)
+        if len(assigned) >= NUMPY_ROWS
+        else None
+    )
+    # a small system's rows are read as plain tuples: cheaper than the flat arrays' views
+    matched = assigned if flat is not None else assigned.tolist()
+    adjacency = probed.row_adj if flat is not None else probed.row_adj.tolist()
+    blocks = irreducible_blocks(adjacency, matched, system.n_unknowns, flat=flat)
+    suspects = _singular_blocks(probed, blocks, matched, seed, flat=flat)
     if suspects:
         # a generic dependency persists at another random pose; a near-coincidence does not
-        suspects = _singular_blocks(probed, blocks, assigned, seed + 1, suspects)
+        suspects = _singular_blocks(probed, blocks, matched, seed + 1, suspects, flat=flat)
+    del matched, adjacency
+    del flat
     if not suspects:
         return RankAnalysis(
             system,

@@ -1,0 +1,187 @@
+"""The flat-array paths of the structural analysis give the answers of the plain ones.
+
+A large mechanism's constraint system, matching, irreducible blocks and block
+patterns are handled as numpy arrays; a small one's were handled row by row.
+Here the constraint system is checked against a row-by-row build of the
+table in :mod:`structure.rigidity.constraints`, the bulk matching against
+rows added one at a time, and the numpy block path of the generic rank
+(forced on small systems) against the plain one, on random mechanisms of
+every group kind, with compound pins, redundant pairs and singular loops.
+"""
+
+from __future__ import annotations
+
+import random
+
+import numpy as np
+import pytest
+
+import structure.assur as assur_module
+import structure.rigidity.constraints as constraints_module
+import structure.rigidity.rank as rank_module
+from structure.assur import plan_groups
+from structure.errors import MechanismError
+from structure.generators import random_mechanism, random_mechanism_with_groups
+from structure.kinds import PairKind
+from structure.model import Mechanism
+from structure.rigidity.constraints import RowKind, constraint_system
+from structure.rigidity.matching import Matcher, _set_keeps_order
+from structure.rigidity.rank import generic_rank
+
+
+def _mechanisms() -> list[Mechanism]:
+    out = [random_mechanism_with_groups(8 + s, s, compound=0.4)[0] for s in range(25)]
+    out += [random_mechanism(3 + s % 12, seed=s) for s in range(25)]
+    for seed in range(15):  # extra R pairs: redundant rows, free units
+        m = random_mechanism(4 + seed % 9, seed=seed)
+        pairs = [
+            (p.a, p.b, p.kind.value, p.point)
+            + (({"angle": p.angle_deg},) if p.kind is PairKind.P else ())
+            for p in m.pairs
+        ]
+        rng = random.Random(seed)
+        for k in range(1 + seed % 3):
+            a, b = rng.sample(list(m.links), 2)
+            pairs.append((a, b, "R", f"X{k}"))
+        out.append(Mechanism.from_pairs(pairs))
+    # a loop of three P pairs (generically singular) hung on a crank
+    loop = [("0", "1", "R", "A"), ("1", "2", "P", "B", {"angle": 10}),
+            ("2", "3", "P", "C", {"angle": 80}), ("3", "1", "P", "D", {"angle": 140}),
+            ("3", "0", "R", "E")]  # fmt: skip
+    out.append(Mechanism.from_pairs(loop))
+    return out
+
+
+MECHANISMS = _mechanisms()
+
+
+def _rows_one_by_one(m: Mechanism) -> list[tuple[RowKind, int, tuple[int, ...], int, str]]:
+    """The pair rows as the table of the constraints module lists them, pair after pair."""
+    links = m.moving_links
+    pos = {x: 2 * i for i, x in enumerate(links)}
+    pins: dict[str, int] = {}
+
+    def body(x: str) -> tuple[int, ...]:
+        return () if x == m.ground else (pos[x], pos[x] + 1)
+
+    rows = []
+    done: set[str] = set()
+    for p in m.pairs:
+        h = m.compound_hinges.get(p.point) if p.kind is PairKind.R and p.point else None
+        if p.kind is PairKind.R and h is None:
+            rows.append((RowKind.HINGE, 2, body(p.b) + body(p.a), p.id, ""))
+        elif h is not None and h.point not in done:
+            done.add(h.point)
+            first: dict[str, int] = {}
+            for pid in h.pairs:
+                for x in m.pair(pid).links:
+                    first.setdefault(x, pid)
+            extra: tuple[int, ...] = ()
+            if m.ground not in h.links:
+                pins[h.point] = extra_pin = 2 * len(links) + len(pins)
+                extra = (extra_pin,)
+            for x in h.links:
+                if x != m.ground:
+                    rows.append((RowKind.PIN, 2, extra + body(x), first[x], x))
+        elif p.kind is PairKind.P:
+            angles = tuple(pos[x] + 1 for x in (p.b, p.a) if x != m.ground)
+            rows.append((RowKind.SLIDE_ANGLE, 1, angles, p.id, ""))
+            rows.append((RowKind.SLIDE, 1, body(p.b) + body(p.a), p.id, ""))
+        elif p.kind is PairKind.H:
+            rows.append((RowKind.CONTACT, 1, body(p.b) + body(p.a), p.id, ""))
+    # newest unknowns first in every row
+    return [(k, s, tuple(sorted(adj, reverse=True)), pid, x) for k, s, adj, pid, x in rows]
+
+
+@pytest.mark.parametrize("numpy_from", [0, 1 << 30], ids=["numpy", "rows"])
+@pytest.mark.parametrize("index", range(len(MECHANISMS)))
+def test_constraint_system_is_the_table_row_by_row(index, numpy_from, monkeypatch):
+    monkeypatch.setattr(constraints_module, "_NUMPY_PAIRS", numpy_from)
+    m = MECHANISMS[index]
+    s = constraint_system(m)
+    got = list(zip(s.row_kind, s.row_size, s.row_adj, s.row_pair, s.row_link, strict=True))
+    assert got == _rows_one_by_one(m)
+    assert [u.size for u in s.unknowns] == s.unknown_sizes()
+    assert s.n_scalar_unknowns == sum(u.size for u in s.unknowns)
+
+
+@pytest.mark.parametrize("index", range(len(MECHANISMS)))
+def test_bulk_matching_is_rows_added_one_by_one(index):
+    m = MECHANISMS[index]
+    s = constraint_system(m, m.driver_links or ("1",))
+    one = Matcher(s.unknown_sizes())
+    left: dict[int, int] = {}
+    for r, (adj, size) in enumerate(zip(s.row_adj, s.row_size, strict=True)):
+        got = one.add_row(adj, size)
+        if got < size:
+            left[r] = size - got
+    bulk = Matcher(s.unknown_sizes())
+    assert bulk.add_rows(s.adj_start, s.adj, s.row_size) == left
+    assert list(bulk.assigned) == list(one.assigned)
+    assert bulk.owners == one.owners
+    # a matching: every unknown holds at most its capacity, every row at most its size
+    assert all(len(rows) <= c for rows, c in zip(bulk.owners, bulk.cap, strict=True))
+    assert all(len(a) <= k for a, k in zip(bulk.assigned, s.row_size, strict=True))
+
+
+def _fields(a):
+    return (a.dependent, a.rank, a.dof, a.free, a.blocks, list(a.assigned), a.method)
+
+
+@pytest.mark.parametrize("index", range(len(MECHANISMS)))
+def test_numpy_block_path_gives_the_plain_answers(index, monkeypatch):
+    m = MECHANISMS[index]
+    system = constraint_system(m, m.driver_links or ("1",))
+    monkeypatch.setattr(rank_module, "_REGULAR_PATTERNS", {})
+    monkeypatch.setattr(rank_module, "NUMPY_ROWS", 1 << 30)
+    plain = _fields(generic_rank(system))
+    remembered = dict(rank_module._REGULAR_PATTERNS)
+    rank_module._REGULAR_PATTERNS.clear()
+    monkeypatch.setattr(rank_module, "NUMPY_ROWS", 0)
+    assert _fields(generic_rank(system)) == plain
+    assert rank_module._REGULAR_PATTERNS == remembered
+
+
+def test_the_p_loop_is_found_singular_by_both_paths(monkeypatch):
+    system = constraint_system(MECHANISMS[-1], ("1",))
+    found = []
+    for threshold in (1 << 30, 0):
+        monkeypatch.setattr(rank_module, "NUMPY_ROWS", threshold)
+        analysis = generic_rank(system)
+        # the slide angles of a closed loop sum to zero: the third (row 5, pair D) is implied
+        # by the other two, which the matching cannot see and the block's determinant does.
+        # Then 2 pivoted angles + 3 for link 2 - 5 independent P constraints = 0: the
+        # chain is rigid, and the driver (row 8) is fixed already
+        assert analysis.method == "dense"
+        assert analysis.dependent == {5: 1, 8: 1}
+        found.append(_fields(analysis))
+    assert found[0] == found[1]
+
+
+@pytest.mark.parametrize("index", range(len(MECHANISMS)))
+def test_numpy_group_plan_gives_the_plain_plan(index, monkeypatch):
+    m = MECHANISMS[index]
+    drivers = m.driver_links or ("1",)
+    plans = []
+    for threshold in (1 << 30, 0):
+        monkeypatch.setattr(assur_module, "NUMPY_ROWS", threshold)
+        try:
+            plan = plan_groups(m, drivers)
+        except MechanismError as exc:
+            plans.append(str(exc))
+            continue
+        plans.append((plan.members, plan.order, list(plan.edges), plan.removed_links))
+    assert plans[0] == plans[1]
+
+
+def test_the_order_of_a_set_of_two_ints_is_predicted():
+    rng = random.Random(7)
+    pairs = [
+        (rng.randrange(1 << k), rng.randrange(1 << k)) for k in (3, 6, 12, 24) for _ in range(4000)
+    ]
+    pairs += [(a, a + 8 * d) for a in range(8) for d in range(1, 200)]  # same first slot
+    pairs = [(a, b) for a, b in pairs if a != b]
+    first = np.array([a for a, _ in pairs], dtype=np.int64)
+    second = np.array([b for _, b in pairs], dtype=np.int64)
+    predicted = _set_keeps_order(first, second).tolist()
+    assert predicted == [tuple({a, b}) == (a, b) for a, b in pairs]

@@ -725,15 +725,15 @@ def _decomposition(
         position = index[b]
         for link in links:
             level[link] = position
-    groups = tuple(
-        _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b], compound))
-        for b in order
-    )
     dag_edges = [(index[u], index[v]) for u, v in edges]
     dag_edges.sort(key=_source)  # networkx's DiGraph order: by source, then as added (stable)
-    return Decomposition(
-        mechanism, tuple(drivers), groups, tuple(dag_edges), removed_links, removed_pairs
+    dag = tuple(dag_edges)
+    del index, dag_edges  # the build's peak memory is when its groups are all made
+    groups = tuple(
+        _build_group(members[b], _group_pairs(mechanism, members[b], level, i, compound))
+        for i, b in enumerate(order)
     )
+    return Decomposition(mechanism, tuple(drivers), groups, dag, removed_links, removed_pairs)
 
 
 def _topological_order(

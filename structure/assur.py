@@ -34,7 +34,7 @@ from array import array
 from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from operator import attrgetter
+from operator import attrgetter, itemgetter
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -74,6 +74,12 @@ __all__ = [
 
 def roman(number: int) -> str:
     """Roman numeral of a class: ``roman(4) == 'IV'``."""
+    known = _SMALL_ROMANS.get(number)  # every group's label asks: the usual ones are kept
+    return _roman_numeral(number) if known is None else known
+
+
+def _roman_numeral(number: int) -> str:
+    """The numeral, largest values first (subtractive pairs such as IV included)."""
     out = ""
     for value, letters in (
         (1000, "M"), (900, "CM"), (500, "D"), (400, "CD"), (100, "C"), (90, "XC"),
@@ -83,6 +89,9 @@ def roman(number: int) -> str:
             out += letters
             number -= value
     return out
+
+
+_SMALL_ROMANS = {number: _roman_numeral(number) for number in range(40)}
 
 
 @dataclass(frozen=True, slots=True)
@@ -99,6 +108,27 @@ class GroupPair:
     point: str | None
     external: bool
     pair: int = 0  # id of the mechanism's pair (0 for a compound hinge's canonical pair)
+
+
+# a group build makes one GroupPair per pair of the mechanism: its slots are set directly,
+# as a frozen dataclass's __init__ does but without its object.__setattr__ per field
+# (unpacking the setters checks at import that they are all the fields)
+_set_kind, _set_links, _set_point, _set_external, _set_pair = (
+    getattr(GroupPair, name).__set__ for name in GroupPair.__slots__
+)
+
+
+def _group_pair(
+    kind: PairKind, links: tuple[str, str], point: str | None, external: bool, pair: int = 0
+) -> GroupPair:
+    """``GroupPair(kind, links, point, external, pair)``, in about half the time."""
+    record = object.__new__(GroupPair)
+    _set_kind(record, kind)
+    _set_links(record, links)
+    _set_point(record, point)
+    _set_external(record, external)
+    _set_pair(record, pair)
+    return record
 
 
 @dataclass(frozen=True, slots=True)
@@ -725,17 +755,18 @@ def _decomposition(
     level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
     compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
     for b, links in members.items():
+        position = index[b]
         for link in links:
-            level[link] = index[b]
+            level[link] = position
+    dag_edges = [(index[u], index[v]) for u, v in edges]
+    dag_edges.sort(key=_source)  # networkx's DiGraph order: by source, then as added (stable)
+    dag = tuple(dag_edges)
+    del index, dag_edges  # the build's peak memory is when its groups are all made
     groups = tuple(
-        _build_group(members[b], _group_pairs(mechanism, members[b], level, index[b], compound))
-        for b in order
+        _build_group(members[b], _group_pairs(mechanism, members[b], level, i, compound))
+        for i, b in enumerate(order)
     )
-    successors: list[list[int]] = [[] for _ in groups]
-    for u, v in edges:  # networkx's DiGraph order: by source, then as added
-        successors[index[u]].append(index[v])
-    dag_edges = tuple((u, v) for u, targets in enumerate(successors) for v in targets)
-    return Decomposition(mechanism, tuple(drivers), groups, dag_edges, removed_links, removed_pairs)
+    return Decomposition(mechanism, tuple(drivers), groups, dag, removed_links, removed_pairs)
 
 
 def _topological_order(
@@ -775,25 +806,41 @@ _R = PairKind.R  # enum member lookups are slow in hot loops
 _PIN = RowKind.PIN
 _PIN_CODE = list(RowKind).index(_PIN)  # its code in ConstraintSystem.row_codes
 
-_GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], dict[str, str], str]
+_source = itemgetter(0)  # of an edge
+
+_GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], int]
 
 
 def _build_group(links: list[str], found: _GroupPairs) -> AssurGroup:
-    pairs, joints, external_letter, middle_letter = found
+    """The group of ``links`` from its pairs, internal joints and number of external pairs."""
+    pairs, joints, n_external = found
     if 3 * len(links) != 2 * len(pairs):
         raise DecompositionError(
             f"group {','.join(links)} has {len(pairs)} pairs for {len(links)} links "
             "(3·links = 2·pairs fails)",
             links,
         )
-    n_external = sum(1 for p in pairs if p.external)
-    assur_class = classify_group(links, joints)
-    kind: DyadKind | None = None
-    if len(links) == 2:
-        a, b = links
-        letters = external_letter.get(a, "?") + middle_letter + external_letter.get(b, "?")
-        kind = DyadKind.from_letters(letters)
-    return AssurGroup(tuple(links), tuple(pairs), assur_class, n_external, kind)
+    kind = _dyad_kind(links, pairs) if len(links) == 2 else None
+    return AssurGroup(tuple(links), tuple(pairs), classify_group(links, joints), n_external, kind)
+
+
+def _dyad_kind(links: list[str], pairs: list[GroupPair]) -> DyadKind | None:
+    """A dyad's letters read external–middle–external, as its kind (None if no kind fits).
+
+    Each link's letter is its first external pair's, the middle letter the
+    last internal pair's ('?' and '' where there is none).
+    """
+    first = links[0]
+    left = right = None
+    middle = ""
+    for p in pairs:
+        if not p.external:
+            middle = p.kind
+        elif p.links[0] == first:
+            left = left or p.kind
+        else:
+            right = right or p.kind
+    return DyadKind.from_letters((left or "?") + middle + (right or "?"))
 
 
 def _group_pairs(
@@ -803,52 +850,84 @@ def _group_pairs(
     level: int,
     compound: Mapping[str, Hinge] | None = None,
 ) -> _GroupPairs:
-    """Pairs of a group known at ``level``: internal joints, external letters, middle letter."""
-    members = set(links)
-    pairs: list[GroupPair] = []
-    joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
-    external_letter: dict[str, str] = {}
-    middle_letter = ""
+    """Pairs of a group known at ``level``, its internal joints and its number of external pairs.
+
+    ``done`` is the level of every link (the group's own are at ``level``).
+    The group's links are read in order, each link's pairs in file order: a
+    pair to a link known before ``level`` is external, a pair to another group
+    link internal (taken from the first of the two read), the pairs at a
+    compound hinge are taken once, from the first group link at it
+    (:func:`_hinge_pairs`).
+    """
     if compound is None:
         compound = mechanism.compound_hinges
+    pairs_of = mechanism.pairs_of
+    pairs: list[GroupPair] = []
+    joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
+    n_external = 0
+    read: set[str] = set()  # the group links whose pairs are taken
     seen_hinges: set[str] = set()
-    seen_pairs: set[int] = set()
     for link in links:
-        for p in mechanism.pairs_of(link):
-            if p.id in seen_pairs:
+        for p in pairs_of(link):
+            a = p.a
+            other = p.b if link == a else a
+            if compound and p.kind is _R and p.point and p.point in compound:
+                if p.point not in seen_hinges:
+                    seen_hinges.add(p.point)
+                    n_external += _hinge_pairs(
+                        compound[p.point], done, level, mechanism.ground, pairs, joints
+                    )
                 continue
-            seen_pairs.add(p.id)
-            other = p.other(link)
-            h = compound.get(p.point) if compound and p.kind is _R and p.point else None
-            if h is not None:
-                if h.point in seen_hinges:
-                    continue
-                seen_hinges.add(h.point)
-                inside = [x for x in h.links if x in members]
-                known = [x for x in h.links if x not in members and done[x] < level]
-                for x in inside[1:]:
-                    pairs.append(GroupPair(_R, (inside[0], x), h.point, False))
-                if len(inside) > 1:
-                    joints.append(tuple(inside))
-                    middle_letter = "R"
-                if known:
-                    # the pin is fixed by the earliest known link at it (the ground first)
-                    anchor = min(known, key=lambda x: (done[x], x != mechanism.ground))
-                    pairs.append(GroupPair(_R, (inside[0], anchor), h.point, True))
-                    external_letter.setdefault(inside[0], "R")
-                continue
-            if other in members:
-                pairs.append(GroupPair(p.kind, (link, other), p.point, False, p.id))
-                joints.append((link, other))
-                middle_letter = p.kind.value
-            elif done[other] < level:
-                pairs.append(GroupPair(p.kind, (link, other), p.point, True, p.id))
-                external_letter.setdefault(link, p.kind.value)
-    return pairs, joints, external_letter, middle_letter
+            known = done[other]
+            if known < level:
+                pairs.append(_group_pair(p.kind, (link, other), p.point, True, p.id))
+                n_external += 1
+            elif known == level and other not in read:
+                joint = (link, other)
+                pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
+                joints.append(joint)
+        read.add(link)
+    return pairs, joints, n_external
+
+
+def _hinge_pairs(
+    hinge: Hinge,
+    done: Mapping[str, int],
+    level: int,
+    ground: str,
+    pairs: list[GroupPair],
+    joints: list[tuple[str, ...]],
+) -> int:
+    """Append a compound hinge's canonical pairs in a group; return its external ones (0 or 1).
+
+    The group links at it are joined to the first of them; the pin is fixed by
+    the earliest known link at it (the ground first).
+    """
+    inside: list[str] = []  # the group's links at the hinge
+    known: list[str] = []  # the links known before the group
+    for x in hinge.links:
+        at = done[x]
+        if at == level:
+            inside.append(x)
+        elif at < level:
+            known.append(x)
+    for x in inside[1:]:
+        pairs.append(_group_pair(_R, (inside[0], x), hinge.point, False))
+    if len(inside) > 1:
+        joints.append(tuple(inside))
+    if not known:
+        return 0
+    anchor = known[0] if len(known) == 1 else min(known, key=lambda x: (done[x], x != ground))
+    pairs.append(_group_pair(_R, (inside[0], anchor), hinge.point, True))
+    return 1
 
 
 def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
     """Class of a group from its internal joints (each: the group links it joins).
+
+    ``max(2, most joints on one link, largest contour)``. A group with at most
+    one joint is class 2, a forest has no contour and a plain ring's contour
+    is all its joints: only the other shapes need the contour search.
 
     >>> classify_group(["2", "3"], [("2", "3")])
     2
@@ -857,27 +936,51 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
     >>> classify_group(list("1234"), [("1", "2"), ("2", "3"), ("3", "4"), ("4", "1")])
     4
     """
+    if not joints or (len(joints) == 1 and len(joints[0]) == 2 and joints[0][0] != joints[0][1]):
+        return 2  # a dyad's one joint: no link on two joints, no contour
     degree = dict.fromkeys(links, 0)
+    n_edges = 0
     for j in joints:
+        n_edges += len(j)
         for x in j:
             degree[x] += 1
-    most = max(degree.values(), default=0)
-    n_nodes = len(links) + len(joints)
-    n_edges = sum(len(j) for j in joints)
-    # a forest has no contour: skip the cycle search
+    most = max(degree.values())
     components = _components(links, joints)
-    contour = 0 if n_edges == n_nodes - components else _longest_contour(links, joints)
-    return max(2, most, contour)
+    if n_edges == len(links) + len(joints) - components:  # a forest: no contour
+        return max(2, most)
+    if (
+        components == 1
+        and all(d == 2 for d in degree.values())
+        and all(len(j) == 2 and j[0] != j[1] for j in joints)
+    ):
+        return max(2, len(joints))  # a ring: the one contour runs through every joint
+    return max(2, most, _longest_contour(links, joints))
 
 
 def _components(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
-    """Connected components of the bipartite graph links ↔ joints (a joint joins ≥ 2 links)."""
-    if len(joints) < 2:  # a dyad's one joint: no union-find needed
-        return len(links) + len(joints) - sum(len(j) for j in joints)
-    pieces = UnionFind(links)
+    """Connected components of the bipartite graph links ↔ joints (a joint joins ≥ 2 links).
+
+    A union-find over the links in a plain dict: each joint merges its links.
+    """
+    parent = {x: x for x in links}
+    count = len(links)
     for joint in joints:
-        pieces.union(*joint)
-    return len({pieces[x] for x in links})
+        if not joint:
+            continue
+        root = _root(parent, joint[0])
+        for x in joint[1:]:
+            other = _root(parent, x)
+            if other != root:
+                parent[other] = root
+                count -= 1
+    return count
+
+
+def _root(parent: dict[str, str], x: str) -> str:
+    """The representative of ``x`` in the union-find ``parent`` (halving the path)."""
+    while parent[x] != x:
+        parent[x] = x = parent[parent[x]]
+    return x
 
 
 def _longest_contour(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:

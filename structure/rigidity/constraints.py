@@ -35,6 +35,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from operator import attrgetter
+from types import MappingProxyType
 
 import numpy as np
 
@@ -105,7 +106,8 @@ class ConstraintSystem:
     row_pair: array
     row_link: tuple[str, ...]
     n_pair_rows: int
-    _index: list = field(default_factory=list, repr=False)  # the link index, made on first use
+    # the link and pin indexes, made on first use (the large paths never ask for them)
+    _indexes: dict = field(default_factory=dict, repr=False)
 
     @property
     def unknowns(self) -> Sequence[Unknown]:
@@ -130,12 +132,17 @@ class ConstraintSystem:
     @property
     def pin(self) -> Mapping[str, int]:
         """The unknown of each compound pin (by its point)."""
-        return {point: 2 * len(self.links) + k for k, point in enumerate(self.pins)}
+        found = self._indexes.get("pin")
+        if found is None:
+            first = 2 * len(self.links)
+            found = self._indexes["pin"] = {p: first + k for k, p in enumerate(self.pins)}
+        return MappingProxyType(found)
 
     def _link_index(self) -> dict[str, int]:
-        if not self._index:
-            self._index.append({link: i for i, link in enumerate(self.links)})
-        return self._index[0]
+        found = self._indexes.get("link")
+        if found is None:
+            found = self._indexes["link"] = {link: i for i, link in enumerate(self.links)}
+        return found
 
     @property
     def n_unknowns(self) -> int:
@@ -192,7 +199,7 @@ class ConstraintSystem:
             self.row_pair + array("i", [0]) * len(kinds),
             self.row_link + tuple(links),
             self.n_pair_rows,
-            self._index,
+            self._indexes,
         )
 
 

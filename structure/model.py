@@ -801,9 +801,9 @@ class Mechanism:
     def driver_links(self) -> tuple[str, ...]:
         return tuple(d.link for d in self.drivers)
 
-    @property
+    @cached_property
     def moving_links(self) -> tuple[str, ...]:
-        """Links other than the ground, in order of first appearance."""
+        """Links other than the ground, in order of first appearance (made once)."""
         return tuple(link for link in self.links if link != self.ground)
 
     def pairs_of(self, link: str) -> Iterator[Pair]:

@@ -34,6 +34,7 @@ from array import array
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
+from itertools import compress, count
 from operator import attrgetter
 from types import MappingProxyType
 
@@ -491,8 +492,11 @@ def _compound_rows(mechanism: Mechanism, number: Mapping[str, int], pins_start: 
         return out
     pins: list[str] = []
     done: set[str] = set()
-    for position, p in enumerate(mechanism.pairs):
-        if p.kind is not _R or p.point is None or p.point in done or p.point not in compound:
+    pairs = mechanism.pairs
+    at_pins = compress(count(), map(compound.__contains__, map(attrgetter("point"), pairs)))
+    for position in at_pins:  # the pairs at compound pins only: one pass in C finds them
+        p = pairs[position]
+        if p.kind is not _R or p.point in done:
             continue
         h = compound[p.point]
         done.add(h.point)

@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 import gc
-from collections.abc import Hashable, Iterable, Iterator
+import itertools
+from array import array
+from collections.abc import Hashable, Iterable, Iterator, Sequence
 from contextlib import contextmanager
+from typing import Any
 
-__all__ = ["UnionFind", "paused_gc"]
+import numpy as np
+
+__all__ = ["FlatSequence", "Ragged", "UnionFind", "int_array", "paused_gc"]
 
 
 @contextmanager
@@ -94,3 +99,87 @@ class UnionFind:
         for other in roots:
             self.weights[root] += self.weights[other]
             self.parents[other] = root
+
+
+_DTYPES = {"b": np.int8, "i": np.int32, "q": np.int64}
+
+
+def int_array(values: np.ndarray, typecode: str = "i") -> array:
+    """``values`` as a flat :class:`array.array` of machine integers (``"b"``, ``"i"`` or ``"q"``).
+
+    Indexing such an array gives Python ints at a few bytes per entry, where a
+    list costs about 36: the large mechanisms' tables are kept this way.
+
+    >>> int_array(np.array([3, 1, 2])).tolist()
+    [3, 1, 2]
+    """
+    out = array(typecode)
+    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=_DTYPES[typecode])).cast("B"))
+    return out
+
+
+class FlatSequence(Sequence):
+    """A sequence whose items are made on access from flat arrays (:meth:`_item` says how).
+
+    A large mechanism's rows, matching and blocks are held in a few flat
+    integer arrays rather than one tuple or list per item; these views give
+    them back item by item. Two of them (or one and a list) are equal when
+    their items are, as tuples.
+    """
+
+    __slots__ = ()
+
+    def _item(self, k: int) -> Any:
+        raise NotImplementedError
+
+    def __getitem__(self, k):  # type: ignore[override]
+        if isinstance(k, slice):
+            return [self._item(i) for i in range(*k.indices(len(self)))]
+        if k < 0:
+            k += len(self)
+        if not 0 <= k < len(self):
+            raise IndexError(k)
+        return self._item(k)
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            isinstance(other, Sequence)
+            and len(self) == len(other)
+            and all(tuple(a) == tuple(b) for a, b in zip(self, other, strict=True))
+        )
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({list(self)!r})"
+
+
+class Ragged(FlatSequence):
+    """Items of different lengths in two flat arrays: item ``k`` is ``values[start[k]:start[k+1]]``.
+
+    >>> r = Ragged.of([(3, 1), (), (2,)])
+    >>> list(r), len(r)
+    ([(3, 1), (), (2,)], 3)
+    """
+
+    __slots__ = ("start", "values")
+
+    def __init__(self, values: array, start: array):
+        self.values, self.start = values, start
+
+    @classmethod
+    def of(cls, items: Sequence[Sequence[int]]) -> Ragged:
+        """The items of a list of sequences, held flat."""
+        values = array("i", itertools.chain.from_iterable(items))
+        return cls(values, array("q", itertools.accumulate(map(len, items), initial=0)))
+
+    def __len__(self) -> int:
+        return len(self.start) - 1
+
+    def _item(self, k: int) -> tuple[int, ...]:
+        return tuple(self.values[self.start[k] : self.start[k + 1]])
+
+    def tolist(self) -> list[tuple[int, ...]]:
+        """Every item as a tuple, in one pass."""
+        values, start = self.values, self.start
+        return [tuple(values[a:b]) for a, b in itertools.pairwise(start)]

@@ -43,6 +43,7 @@ import numpy as np
 from ..errors import EdgeListError, EdgeListProblem
 from ..kinds import PairKind
 from ..model import Mechanism
+from ..utils import FlatSequence, Ragged, int_array
 
 __all__ = [
     "ConstraintSystem",
@@ -118,7 +119,7 @@ class ConstraintSystem:
     @property
     def row_adj(self) -> Sequence[tuple[int, ...]]:
         """The unknown blocks each row block touches, as tuples (made on access)."""
-        return _RowAdjacency(self.adj_start, self.adj)
+        return Ragged(self.adj, self.adj_start)
 
     @property
     def pos(self) -> Mapping[str, int]:
@@ -204,7 +205,7 @@ class ConstraintSystem:
         )
 
 
-class _Unknowns(Sequence):
+class _Unknowns(FlatSequence):
     """The unknown blocks of a system as :class:`Unknown` records, made on access."""
 
     __slots__ = ("_links", "_pins")
@@ -215,47 +216,13 @@ class _Unknowns(Sequence):
     def __len__(self) -> int:
         return 2 * len(self._links) + len(self._pins)
 
-    def __getitem__(self, u):  # type: ignore[override]
-        if isinstance(u, slice):
-            return [self[i] for i in range(*u.indices(len(self)))]
-        if u < 0:
-            u += len(self)
+    def _item(self, u: int) -> Unknown:
         n = 2 * len(self._links)
         if u >= n:
             return Unknown("pin", self._pins[u - n], 2)
-        if u < 0:
-            raise IndexError(u)
-        return (
-            Unknown("ang", self._links[u >> 1], 1)
-            if u & 1
-            else Unknown("pos", self._links[u >> 1], 2)
-        )
-
-
-class _RowAdjacency(Sequence):
-    """``row_adj[r]``: the unknowns of row ``r`` as a tuple, read from the flat arrays."""
-
-    __slots__ = ("_adj", "_start")
-
-    def __init__(self, start: array, adj: array):
-        self._start, self._adj = start, adj
-
-    def __len__(self) -> int:
-        return len(self._start) - 1
-
-    def __getitem__(self, r):  # type: ignore[override]
-        if isinstance(r, slice):
-            return [self[i] for i in range(*r.indices(len(self)))]
-        if r < 0:
-            r += len(self)
-        if not 0 <= r < len(self):
-            raise IndexError(r)
-        return tuple(self._adj[self._start[r] : self._start[r + 1]])
-
-    def tolist(self) -> list[tuple[int, ...]]:
-        """Every row's unknowns as a tuple, in one pass."""
-        adj, start = self._adj, self._start
-        return [tuple(adj[a:b]) for a, b in itertools.pairwise(start)]
+        if u & 1:
+            return Unknown("ang", self._links[u >> 1], 1)
+        return Unknown("pos", self._links[u >> 1], 2)
 
 
 class _Numbered(Mapping):
@@ -379,21 +346,13 @@ def _system_by_numpy(
         links,
         pins.pins,
         tuple(map(_KINDS.__getitem__, codes.tolist())),
-        _as_array("b", sizes[order]),
-        _as_array("q", adj_start),
-        _as_array("i", touched[present]),
-        _as_array("i", pairs[order]),
+        int_array(sizes[order], "b"),
+        int_array(adj_start, "q"),
+        int_array(touched[present], "i"),
+        int_array(pairs[order], "i"),
         tuple(row_link),
         len(order),
     )
-
-
-def _as_array(typecode: str, values: np.ndarray) -> array:
-    """``values`` as a flat :class:`array.array` of ``typecode`` (indexing it gives Python ints)."""
-    out = array(typecode)
-    dtype = {"b": np.int8, "i": np.int32, "q": np.int64}[typecode]
-    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=dtype)).cast("B"))
-    return out
 
 
 @dataclass(frozen=True, slots=True)

@@ -28,6 +28,8 @@ from itertools import repeat
 
 import numpy as np
 
+from ..utils import FlatSequence, Ragged, int_array
+
 __all__ = [
     "NUMPY_ROWS",
     "Assignment",
@@ -245,7 +247,7 @@ class Matcher:
         ]
 
 
-class Assignment(Sequence):
+class Assignment(FlatSequence):
     """``assignment[r]``: the unknown blocks row ``r`` is matched to, one entry per unit.
 
     A view of two slots per row in one flat array (-1 for an empty slot),
@@ -260,13 +262,7 @@ class Assignment(Sequence):
     def __len__(self) -> int:
         return len(self.units) // 2
 
-    def __getitem__(self, r):  # type: ignore[override]
-        if isinstance(r, slice):
-            return [self[i] for i in range(*r.indices(len(self)))]
-        if r < 0:
-            r += len(self)
-        if not 0 <= r < len(self):
-            raise IndexError(r)
+    def _item(self, r: int) -> tuple[int, ...]:
         a, b = self.units[2 * r], self.units[2 * r + 1]
         return () if a < 0 else (a,) if b < 0 else (a, b)
 
@@ -277,16 +273,6 @@ class Assignment(Sequence):
             () if a < 0 else (a,) if b < 0 else (a, b)
             for a, b in zip(u[0::2], u[1::2], strict=True)
         ]
-
-    def __eq__(self, other: object) -> bool:
-        if isinstance(other, Assignment):
-            return self.units == other.units
-        return isinstance(other, Sequence) and list(self) == [tuple(x) for x in other]
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def __repr__(self) -> str:
-        return f"Assignment({list(self)!r})"
 
 
 def irreducible_blocks(
@@ -313,54 +299,14 @@ def irreducible_blocks(
         start, successors = _adjacency_arrays(*_dependency_edges(adj, assigned), n_unknowns)
         return _strongly_connected(start, successors, n_unknowns)
     start, successors = _adjacency_arrays(*_dependency_edges_flat(flat), n_unknowns)
-    return Blocks.of(_strongly_connected(start, successors, n_unknowns))
-
-
-class Blocks(Sequence):
-    """Irreducible blocks held in two flat arrays: ``blocks[b]`` is a sorted list of unknowns.
-
-    ``units[start[b]:start[b + 1]]`` are block ``b``'s unknowns. A large
-    mechanism has hundreds of thousands of blocks: a list per block (and an
-    int object per unknown) would cost ten times the memory.
-    """
-
-    __slots__ = ("start", "units")
-
-    def __init__(self, units: array, start: array):
-        self.units, self.start = units, start
-
-    @classmethod
-    def of(cls, blocks: Sequence[Sequence[int]]) -> Blocks:
-        """The blocks of a list of lists."""
-        units = array("i", itertools.chain.from_iterable(blocks))
-        return cls(units, array("q", itertools.accumulate(map(len, blocks), initial=0)))
-
-    def __len__(self) -> int:
-        return len(self.start) - 1
-
-    def __getitem__(self, b):  # type: ignore[override]
-        if isinstance(b, slice):
-            return [self[i] for i in range(*b.indices(len(self)))]
-        if b < 0:
-            b += len(self)
-        if not 0 <= b < len(self):
-            raise IndexError(b)
-        return self.units[self.start[b] : self.start[b + 1]].tolist()
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, Sequence) and list(self) == [list(x) for x in other]
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def __repr__(self) -> str:
-        return f"Blocks({list(self)!r})"
+    return Ragged.of(_strongly_connected(start, successors, n_unknowns))
 
 
 def block_arrays(blocks: Sequence[Sequence[int]]) -> tuple[np.ndarray, np.ndarray]:
     """``(units, start)``: the blocks' unknowns one after another, and where each block starts."""
-    if isinstance(blocks, Blocks):
+    if isinstance(blocks, Ragged):
         return (
-            np.frombuffer(blocks.units, dtype=np.int32).astype(np.int64),
+            np.frombuffer(blocks.values, dtype=np.int32).astype(np.int64),
             np.frombuffer(blocks.start, dtype=np.int64),
         )
     count = np.fromiter(map(len, blocks), np.int64, len(blocks))
@@ -513,7 +459,7 @@ def _adjacency_arrays(
         del keep
         start = np.zeros(n_nodes + 1, dtype=np.int64)
         np.cumsum(np.bincount(src, minlength=n_nodes), out=start[1:])
-        return _as_array(start), _as_array(dst[np.argsort(src, kind="stable")])
+        return int_array(start), int_array(dst[np.argsort(src, kind="stable")])
     pairs = [(v, w) for v, w in zip(sources, targets, strict=True) if v != w]
     counts = array("i", [0]) * (n_nodes + 1)
     for v, _ in pairs:
@@ -526,12 +472,6 @@ def _adjacency_arrays(
         flat[fill[v]] = w
         fill[v] += 1
     return counts, flat
-
-
-def _as_array(values: np.ndarray) -> array:
-    out = array("i")
-    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=np.intc)).cast("B"))
-    return out
 
 
 def _strongly_connected(start: array, flat: array, n_nodes: int) -> list[list[int]]:

@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import MechanismError
+from ..utils import int_array
 from .constraints import (
     ConstraintSystem,
     Realization,
@@ -80,8 +81,9 @@ class RankAnalysis:
         Scalar unknowns minus ``rank``: the mobility before passive motions.
     free : list of (int, int)
         Unknown blocks (and units) that the pairs and drivers leave free.
-    blocks : list of list of int or None
-        Irreducible blocks of the driven system in solve order, when it is
+    blocks : sequence of sequences of int, or None
+        Irreducible blocks of the driven system in solve order (each sorted;
+        a large system's held flat, see :class:`~structure.utils.Ragged`), when it is
         square and regular (the usual case); ``None`` otherwise.
     assigned : list of tuple of int
         The matching behind ``blocks``: the unknown blocks each row is matched
@@ -153,7 +155,7 @@ def _singular_blocks(
     then sorted by pattern with numpy (:func:`_singular_blocks_by_pattern`).
     """
     offsets, _ = system.scalar_offsets()
-    uo = _int_array(offsets)
+    uo = int_array(offsets, "q")
     if flat is not None:
         layout = _BlockLayout.of(system, blocks, flat)
         rows_of = layout.rows_of
@@ -162,9 +164,7 @@ def _singular_blocks(
     else:
         rows_of = _rows_of_blocks(system, blocks, assigned)
     representative: dict[tuple, int] = {}
-    evaluated: list[tuple[int, list[list[float]]]] = []
-    bad: list[int] = []
-    realization: Realization | None = None
+    judged: list[tuple[int, Sequence[int], Sequence[int]]] = []
     for b in range(len(blocks)) if which is None else which:
         units = blocks[b]
         rows = rows_of(b)
@@ -174,16 +174,8 @@ def _singular_blocks(
             pattern = _block_pattern(system, units, rows, assigned)
             if pattern in _REGULAR_PATTERNS or representative.setdefault(pattern, b) != b:
                 continue  # a repeat is judged with its pattern's first block, below
-        if realization is None:
-            realization = random_realization(system, seed)
-        a = _block_matrix(system, realization, units, rows, assigned, uo)
-        if a is None:
-            bad.append(b)
-        else:
-            evaluated.append((b, a))
-    if evaluated:
-        ratios = _singular_ratios([a for _, a in evaluated]).tolist()
-        bad.extend(b for (b, _), x in zip(evaluated, ratios, strict=True) if x <= _RANK_TOL)
+        judged.append((b, units, rows))
+    bad = _judge(system, assigned, seed, uo, judged)
     if which is None:
         singular = set(bad)
         if singular:  # rare: the repeats of a singular pattern's first block are singular too
@@ -322,17 +314,40 @@ def _singular_blocks_by_pattern(
         pattern_of[members] = len(firsts) + inverse
         firsts.extend(members[first].tolist())
     representative: dict[tuple, int] = {}
-    evaluated: list[tuple[int, list[list[float]]]] = []
-    bad: list[int] = []
-    realization: Realization | None = None
+    judged: list[tuple[int, Sequence[int], Sequence[int]]] = []
     for b in sorted(firsts):
         units, rows = blocks[b], layout.rows_of(b)
         pattern = _block_pattern(system, units, rows, assigned)
-        if pattern in _REGULAR_PATTERNS:
-            continue
-        representative[pattern] = b
-        if realization is None:
-            realization = random_realization(system, seed)
+        if pattern not in _REGULAR_PATTERNS:
+            representative[pattern] = b
+            judged.append((b, units, rows))
+    bad = _judge(system, assigned, seed, uo, judged)
+    singular = set(bad)
+    if singular:  # every block of a singular pattern is singular
+        hit = np.isin(pattern_of, pattern_of[sorted(singular)])
+        bad = np.flatnonzero(hit).tolist()
+    _remember_regular(pattern for pattern, b in representative.items() if b not in singular)
+    return sorted(bad)
+
+
+def _judge(
+    system: ConstraintSystem,
+    assigned: Sequence[Sequence[int]],
+    seed: int,
+    uo: Sequence[int],
+    blocks: Sequence[tuple[int, Sequence[int], Sequence[int]]],
+) -> list[int]:
+    """Which of ``blocks`` (index, units, rows) are singular at the random realization of ``seed``.
+
+    A block whose rows do not fill its square matrix is singular; the others
+    are judged by their singular values, all in one batched call.
+    """
+    if not blocks:
+        return []
+    realization = random_realization(system, seed)
+    bad: list[int] = []
+    evaluated: list[tuple[int, list[list[float]]]] = []
+    for b, units, rows in blocks:
         a = _block_matrix(system, realization, units, rows, assigned, uo)
         if a is None:
             bad.append(b)
@@ -341,12 +356,7 @@ def _singular_blocks_by_pattern(
     if evaluated:
         ratios = _singular_ratios([a for _, a in evaluated]).tolist()
         bad.extend(b for (b, _), x in zip(evaluated, ratios, strict=True) if x <= _RANK_TOL)
-    singular = set(bad)
-    if singular:  # every block of a singular pattern is singular
-        hit = np.isin(pattern_of, pattern_of[sorted(singular)])
-        bad = np.flatnonzero(hit).tolist()
-    _remember_regular(pattern for pattern, b in representative.items() if b not in singular)
-    return sorted(bad)
+    return bad
 
 
 def _distinct_lines(lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -397,13 +407,6 @@ def _repeats_of(
         first = representative.get(_block_pattern(system, units, rows, assigned))
         if first is not None and first != b and first in singular:
             out.append(b)
-    return out
-
-
-def _int_array(values: np.ndarray) -> array:
-    """``values`` as a flat array of machine integers (8 bytes each, not a list's 36)."""
-    out = array("q")
-    out.frombytes(memoryview(np.ascontiguousarray(values, dtype=np.int64)).cast("B"))
     return out
 
 

@@ -25,6 +25,7 @@ here as before.
 
 from __future__ import annotations
 
+import itertools
 import math
 import operator
 from array import array
@@ -874,6 +875,8 @@ def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
     for p in pairs:
         add_end(numbered(p.a, len(number)))
         add_end(numbered(p.b, len(number)))
+    if len(pairs) < _NUMPY_PAIRS:
+        return _link_index_by_rows(pairs, number, ends)
     end_link = np.frombuffer(ends, dtype=np.intc)
     order = np.argsort(end_link, kind="stable")  # the ends by link, each link's in file order
     offsets = np.zeros(len(number) + 1, dtype=np.intc)
@@ -886,6 +889,32 @@ def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
         array("i", offsets.tobytes()),
         tuple(records[order // 2].tolist()),
         array("i", end_link[order ^ 1].tobytes()),  # the other end of the same pair
+    )
+
+
+#: from this many pairs on, the link index is sorted by numpy (below, in Python: a small
+#: mechanism is built many times over in a batch, and numpy's calls cost more than its work)
+_NUMPY_PAIRS = 256
+
+
+def _link_index_by_rows(
+    pairs: Sequence[Pair], number: dict[str, int], ends: array[int]
+) -> _LinkIndex:
+    """:func:`_link_index` of a small mechanism, the same tables grouped in Python."""
+    incident: list[list[Pair]] = [[] for _ in number]
+    neighbours: list[list[int]] = [[] for _ in number]
+    for k, p in enumerate(pairs):
+        a, b = ends[2 * k], ends[2 * k + 1]
+        incident[a].append(p)
+        neighbours[a].append(b)
+        incident[b].append(p)
+        neighbours[b].append(a)
+    return _LinkIndex(
+        tuple(number),
+        number,
+        array("i", itertools.accumulate(map(len, incident), initial=0)),
+        tuple(itertools.chain.from_iterable(incident)),
+        array("i", itertools.chain.from_iterable(neighbours)),
     )
 
 

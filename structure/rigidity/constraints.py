@@ -31,12 +31,11 @@ import math
 import random
 import zlib
 from array import array
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from itertools import compress, count
 from operator import attrgetter
-from types import MappingProxyType
 
 import numpy as np
 
@@ -123,28 +122,34 @@ class ConstraintSystem:
 
     @property
     def pos(self) -> Mapping[str, int]:
-        """The position unknown of each moving link."""
-        return _Numbered(self._link_index(), 0)
+        """The position unknown of each moving link (made on first use)."""
+        found = self._indexes.get("pos")
+        if found is None:
+            found = self._indexes["pos"] = {x: 2 * i for i, x in enumerate(self.links)}
+        return found
 
     @property
     def ang(self) -> Mapping[str, int]:
-        """The angle unknown of each moving link."""
-        return _Numbered(self._link_index(), 1)
+        """The angle unknown of each moving link (made on first use)."""
+        found = self._indexes.get("ang")
+        if found is None:
+            found = self._indexes["ang"] = {x: 2 * i + 1 for i, x in enumerate(self.links)}
+        return found
 
     @property
     def pin(self) -> Mapping[str, int]:
-        """The unknown of each compound pin (by its point)."""
+        """The unknown of each compound pin, by its point (made on first use)."""
         found = self._indexes.get("pin")
         if found is None:
             first = 2 * len(self.links)
             found = self._indexes["pin"] = {p: first + k for k, p in enumerate(self.pins)}
-        return MappingProxyType(found)
-
-    def _link_index(self) -> dict[str, int]:
-        found = self._indexes.get("link")
-        if found is None:
-            found = self._indexes["link"] = {link: i for i, link in enumerate(self.links)}
         return found
+
+    def unknown_kind(self, u: int) -> str:
+        """``'pos'``, ``'ang'`` or ``'pin'``: what unknown block ``u`` is."""
+        if u >= 2 * len(self.links):
+            return "pin"
+        return "ang" if u & 1 else "pos"
 
     @property
     def n_unknowns(self) -> int:
@@ -223,24 +228,6 @@ class _Unknowns(FlatSequence):
         if u & 1:
             return Unknown("ang", self._links[u >> 1], 1)
         return Unknown("pos", self._links[u >> 1], 2)
-
-
-class _Numbered(Mapping):
-    """``link -> 2·index + offset``: the position (0) or angle (1) unknown of each link."""
-
-    __slots__ = ("_index", "_offset")
-
-    def __init__(self, index: dict[str, int], offset: int):
-        self._index, self._offset = index, offset
-
-    def __getitem__(self, link: str) -> int:
-        return 2 * self._index[link] + self._offset
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._index)
-
-    def __len__(self) -> int:
-        return len(self._index)
 
 
 _KINDS = tuple(RowKind)
@@ -745,13 +732,13 @@ def row_entries(
     out = []
     if kind is _PROBE:
         u = system.row_adj[r][0]
-        if system.row_size[r] == system.unknowns[u].size:
+        if system.row_size[r] == system.unknown_size(u):
             return [(k, uo[u] + k, 1.0) for k in range(system.row_size[r])]
         # one generic combination of the block's coordinates
-        return [(0, uo[u] + k, 1.0 + 0.37 * k) for k in range(system.unknowns[u].size)]
+        return [(0, uo[u] + k, 1.0 + 0.37 * k) for k in range(system.unknown_size(u))]
     if kind is _DRIVER:
         u = system.row_adj[r][0]
-        if system.unknowns[u].kind == "ang":
+        if system.unknown_kind(u) == "ang":
             return [(0, uo[u], 1.0)]
         dx, dy = realization.direction[r] or (1.0, 0.0)
         return [(0, uo[u], dx), (0, uo[u] + 1, dy)]

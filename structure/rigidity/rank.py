@@ -626,7 +626,7 @@ def _angle_rows(system: ConstraintSystem, rows: Sequence[int]) -> list[bool]:
         if kind is RowKind.SLIDE_ANGLE:
             angle = True
         elif kind in (RowKind.DRIVER, RowKind.PROBE):
-            angle = system.unknowns[system.row_adj[r][0]].kind == "ang"
+            angle = system.unknown_kind(system.row_adj[r][0]) == "ang"
         else:
             angle = False
         out.extend([angle] * system.row_size[r])
@@ -656,7 +656,7 @@ def dimensionless_jacobian(
     length = sketch_scale(system, realization)
     uo, _ = system.scalar_offsets()
     offsets = uo.tolist()
-    angle_cols = [offsets[u] for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
+    angle_cols = [offsets[u] for u in range(1, 2 * len(system.links), 2)]
     J[:, angle_cols] /= length
     J[np.array(_angle_rows(system, rows), dtype=bool)] *= length
     return J, length

@@ -121,7 +121,7 @@ def nearby_pose(
     offsets, _ = system.scalar_offsets()
     uo = offsets.tolist()
     length = sketch_scale(system, sketch)
-    angle_columns = [uo[u] for u, unk in enumerate(system.unknowns) if unk.kind == "ang"]
+    angle_columns = [uo[u] for u in range(1, 2 * len(system.links), 2)]
     # residuals in the sketch's unit: lengths divided by its size, angles as they are
     residual_unit = np.concatenate(
         [

@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 import structure.assur as assur_module
+import structure.model as model_module
 import structure.rigidity.constraints as constraints_module
 import structure.rigidity.rank as rank_module
 from structure.assur import plan_groups
@@ -185,3 +186,18 @@ def test_the_order_of_a_set_of_two_ints_is_predicted():
     second = np.array([b for _, b in pairs], dtype=np.int64)
     predicted = _set_keeps_order(first, second).tolist()
     assert predicted == [tuple({a, b}) == (a, b) for a, b in pairs]
+
+
+@pytest.mark.parametrize("index", range(len(MECHANISMS)))
+def test_link_tables_grouped_by_numpy_and_by_rows_agree(index, monkeypatch):
+    original = MECHANISMS[index]
+    tables = []
+    for threshold in (0, 1 << 30):
+        monkeypatch.setattr(model_module, "_NUMPY_PAIRS", threshold)
+        m = original.evolve(pairs=original.pairs)
+        reached = m.connected_to_ground()
+        tables.append([(x, [p.id for p in m.pairs_of(x)], x in reached) for x in m.links])
+    assert tables[0] == tables[1]
+    # each link's pairs are those that name it, in file order
+    named = [[p.id for p in original.pairs if x in (p.a, p.b)] for x in original.links]
+    assert [pairs for _, pairs, _ in tables[0]] == named

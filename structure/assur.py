@@ -43,6 +43,7 @@ from .errors import DecompositionError, MobilityError
 from .kinds import DyadKind, PairKind
 from .model import Hinge, Mechanism
 from .rigidity.constraints import (
+    ROW_CODE,
     ConstraintSystem,
     MissingGeometry,
     RowKind,
@@ -561,7 +562,7 @@ class _PairRows:
             units = np.full((n, 2), -1, dtype=np.int32)
             for r, got in enumerate(assigned[:n]):
                 units[r, : len(got)] = got
-        pin = system.row_codes()[:n] == _PIN_CODE
+        pin = system.row_codes()[:n] == ROW_CODE[_PIN]
         return cls(
             units.astype(np.int32),
             pin,
@@ -804,7 +805,6 @@ def _topological_order(
 
 _R = PairKind.R  # enum member lookups are slow in hot loops
 _PIN = RowKind.PIN
-_PIN_CODE = list(RowKind).index(_PIN)  # its code in ConstraintSystem.row_codes
 
 _source = itemgetter(0)  # of an edge
 

@@ -45,6 +45,7 @@ from ..model import Mechanism
 from ..utils import FlatSequence, Ragged, int_array
 
 __all__ = [
+    "ROW_CODE",
     "ConstraintSystem",
     "MissingGeometry",
     "Realization",
@@ -231,7 +232,8 @@ class _Unknowns(FlatSequence):
 
 
 _KINDS = tuple(RowKind)
-_CODE = {kind: k for k, kind in enumerate(_KINDS)}
+#: each row kind's code in :meth:`ConstraintSystem.row_codes`
+ROW_CODE = {kind: k for k, kind in enumerate(_KINDS)}
 
 
 def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> ConstraintSystem:
@@ -322,7 +324,7 @@ def _system_by_numpy(
     present = touched >= 0
     adj_start = np.zeros(len(order) + 1, dtype=np.int64)
     np.cumsum(present.sum(axis=1), out=adj_start[1:])
-    codes = np.concatenate([rows.kind, np.full(count, _CODE[_PIN], dtype=np.int8)])[order]
+    codes = np.concatenate([rows.kind, np.full(count, ROW_CODE[_PIN], dtype=np.int8)])[order]
     row_link = [""] * len(order)
     for position in np.flatnonzero(order >= len(rows.key)).tolist():
         row_link[position] = pins.links[int(order[position]) - len(rows.key)]
@@ -394,11 +396,11 @@ def _pair_rows(mechanism: Mechanism, number: Mapping[str, int]) -> _Rows:
     adj[len(plain) :, 1] = np.where(on_ground, -1, 2 * lo + 1)[slides]
     del hi, lo, on_ground
     position = np.arange(n, dtype=np.int64) * _ROW_STRIDE
-    row_kind = np.array([_CODE[_HINGE], _CODE[_SLIDE], _CODE[_CONTACT]], dtype=np.int8)
+    row_kind = np.array([ROW_CODE[_HINGE], ROW_CODE[_SLIDE], ROW_CODE[_CONTACT]], dtype=np.int8)
     return _Rows(
         key=np.concatenate([position[plain] + (kind[plain] == 1), position[slides]]),
         kind=np.concatenate(
-            [row_kind[kind[plain]], np.full(len(slides), _CODE[_SLIDE_ANGLE], dtype=np.int8)]
+            [row_kind[kind[plain]], np.full(len(slides), ROW_CODE[_SLIDE_ANGLE], dtype=np.int8)]
         ),
         size=np.concatenate(
             [np.where(kind[plain] == 0, 2, 1).astype(np.int8), np.ones(len(slides), np.int8)]

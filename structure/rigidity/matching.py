@@ -95,24 +95,9 @@ class Matcher:
 
         Returns the number of units matched; the others stay unmatched for good.
         """
-        r = len(self._rseen)
-        self._adj.extend(adj)
-        self._start.append(len(self._adj))
-        self._units.extend((-1, -1))
-        self._rseen.append(0)
-        load, cap = self._load, self.cap
-        got = 0
-        for _ in range(size):
-            for u in adj:  # cheap first try: a free unit next door
-                if load[u] < cap[u]:
-                    self._take(r, u)
-                    got += 1
-                    break
-            else:
-                if not self._augment(r):
-                    break
-                got += 1
-        return got
+        adj = array("i", adj)
+        unmatched = self.add_rows(array("q", [0, len(adj)]), adj, (size,))
+        return size - sum(unmatched.values())
 
     def add_rows(self, adj_start: array, adj: array, sizes: Sequence[int]) -> dict[int, int]:
         """Add many row blocks at once, as :meth:`add_row` one after another would.
@@ -152,12 +137,6 @@ class Matcher:
                         break
                 got += 1
         return unmatched
-
-    def _take(self, r: int, u: int) -> None:
-        self._owner[2 * u + self._load[u]] = r
-        self._load[u] += 1
-        units = self._units
-        units[2 * r + (units[2 * r] != -1)] = u
 
     def _augment(self, r0: int) -> bool:
         """Find a shortest augmenting path from row ``r0`` (breadth first) and flip it.

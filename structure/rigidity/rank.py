@@ -33,6 +33,7 @@ import numpy as np
 from ..errors import MechanismError
 from ..utils import int_array
 from .constraints import (
+    ROW_CODE,
     ConstraintSystem,
     Realization,
     RowKind,
@@ -224,9 +225,6 @@ class _BlockLayout:
         return self.rows[self.row_start[b] : self.row_start[b + 1]].tolist()
 
 
-_KIND_CODE = {kind: k for k, kind in enumerate(RowKind)}
-
-
 def _row_codes(
     system: ConstraintSystem,
     flat: FlatRows,
@@ -259,7 +257,7 @@ def _shared_numbers(
     """Each row's shared point (a pin, or its pair) numbered in order of first use in its block."""
     pair = np.frombuffer(system.row_pair, dtype=np.int32)[rows].astype(np.int64)
     key = 2 * pair + 1
-    pins = np.flatnonzero(kind[rows] == _KIND_CODE[RowKind.PIN])
+    pins = np.flatnonzero(kind[rows] == ROW_CODE[RowKind.PIN])
     if len(pins):
         point_of = system.mechanism.pair
         names = [point_of(pid).point for pid in pair[pins].tolist()]
@@ -298,7 +296,7 @@ def _singular_blocks_by_pattern(
     trivial = (n_units == 1) & (n_rows == 1)
     trivial[trivial] = np.isin(
         layout.codes[layout.row_start[:-1][trivial], 0],
-        [_KIND_CODE[RowKind.DRIVER], _KIND_CODE[RowKind.PROBE]],
+        [ROW_CODE[RowKind.DRIVER], ROW_CODE[RowKind.PROBE]],
     )
     pattern_of = np.full(len(blocks), -1, dtype=np.int64)
     firsts: list[int] = []

@@ -815,6 +815,24 @@ class Mechanism:
             return iter(())
         return iter(index.incident[index.offsets[k] : index.offsets[k + 1]])
 
+    def pair_ends(self) -> np.ndarray:
+        """The positions in :attr:`links` (the ground 0) of each pair's links ``a``, ``b``.
+
+        One row per pair, in file order (a read-only view, made without a
+        pass over the pairs: the numbers were found when the links were).
+
+        >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "0", "P")])
+        >>> m.pair_ends().tolist()
+        [[0, 1], [1, 2], [2, 0]]
+        """
+        return np.frombuffer(self._links.ends, dtype=np.intc).reshape(-1, 2)
+
+    def pair_ids(self) -> np.ndarray:
+        """The id of each pair, in file order, as an int32 array."""
+        if not self._by_id:  # every id is its position
+            return np.arange(1, len(self.pairs) + 1, dtype=np.int32)
+        return np.fromiter(map(_PAIR_ID, self.pairs), np.int32, len(self.pairs))
+
     def pair(self, pair_id: int) -> Pair:
         """The pair with id ``pair_id``."""
         if self._by_id:
@@ -858,6 +876,7 @@ class _LinkIndex:
     order (a pair once at each of its ends), and ``neighbours`` holds, at
     the same places, the number of the link at the pair's other end: one
     tuple and two arrays of 4-byte numbers instead of a tuple per link.
+    ``ends`` holds the numbers of each pair's links ``a``, ``b`` in turn.
     """
 
     links: tuple[str, ...]
@@ -865,6 +884,7 @@ class _LinkIndex:
     offsets: array[int]
     incident: tuple[Pair, ...]
     neighbours: array[int]
+    ends: array[int]
 
 
 def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
@@ -889,6 +909,7 @@ def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
         array("i", offsets.tobytes()),
         tuple(records[order // 2].tolist()),
         array("i", end_link[order ^ 1].tobytes()),  # the other end of the same pair
+        ends,
     )
 
 
@@ -915,6 +936,7 @@ def _link_index_by_rows(
         array("i", itertools.accumulate(map(len, incident), initial=0)),
         tuple(itertools.chain.from_iterable(incident)),
         array("i", itertools.chain.from_iterable(neighbours)),
+        ends,
     )
 
 

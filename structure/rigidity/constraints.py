@@ -311,7 +311,7 @@ def _system_by_numpy(
     mechanism: Mechanism, links: tuple[str, ...], number: Mapping[str, int], pins: _PinRows
 ) -> ConstraintSystem:
     """The pair rows laid out by numpy (a large mechanism's): one column per field."""
-    rows = _pair_rows(mechanism, number)
+    rows = _pair_rows(mechanism)
     count = len(pins.key)
     pin_adj = np.full((count, 4), -1, dtype=np.int32)
     for k, adj in enumerate(pins.adj):
@@ -363,7 +363,7 @@ class _Rows:
 _ROW_STRIDE = 1 << 20
 
 
-def _pair_rows(mechanism: Mechanism, number: Mapping[str, int]) -> _Rows:
+def _pair_rows(mechanism: Mechanism) -> _Rows:
     """The rows of every pair but the R pairs at a compound pin.
 
     Newest unknowns first in each row: the matching then stays local to the
@@ -378,11 +378,10 @@ def _pair_rows(mechanism: Mechanism, number: Mapping[str, int]) -> _Rows:
     if compound:
         at_pin = np.fromiter(map(compound.__contains__, map(attrgetter("point"), pairs)), bool, n)
         kind[at_pin & (kind == 0)] = 3
-    a = np.fromiter(map(number.__getitem__, map(attrgetter("a"), pairs)), np.int32, n)
-    b = np.fromiter(map(number.__getitem__, map(attrgetter("b"), pairs)), np.int32, n)
-    ids = np.fromiter(map(attrgetter("id"), pairs), np.int32, n)
-    hi, lo = np.maximum(a, b), np.minimum(a, b)
-    del a, b
+    # the system numbers links as the mechanism does, less the ground (-1)
+    ends = mechanism.pair_ends()
+    hi, lo = ends.max(axis=1) - 1, ends.min(axis=1) - 1
+    ids = mechanism.pair_ids()
     plain = np.flatnonzero(kind < 3)  # hinges, contacts and the slide rows of P pairs
     slides = np.flatnonzero(kind == _KIND_OF[_P])
     # up to four unknowns per row (int32: a large mechanism has 10^5 rows), -1 past the end

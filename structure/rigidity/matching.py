@@ -461,8 +461,9 @@ def _strongly_connected(start: array, flat: array, n_nodes: int) -> list[list[in
     lowers a link value again (no separate on-stack flags).
     """
     done = n_nodes + 1
-    index = array("i", [-1]) * n_nodes
-    low = array("i", [0]) * n_nodes
+    # lists: read once per edge, where a list's item costs less than an array's
+    index = [-1] * n_nodes
+    low = [0] * n_nodes
     ptr = start[:-1]
     stack: list[int] = []
     comps: list[list[int]] = []

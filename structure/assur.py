@@ -30,6 +30,7 @@ True
 from __future__ import annotations
 
 import heapq
+import itertools
 from array import array
 from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -597,17 +598,25 @@ def _block_owners(
     n = len(system.links)
     owner = np.full(system.n_unknowns, -1, dtype=np.int64)
     owner[: 2 * n] = np.repeat(start, 2)
-    if rows.pin.any():
-        index = {link: i for i, link in enumerate(system.links)}
-        for r in np.flatnonzero(rows.pin).tolist():
-            b = int(start[index[system.row_link[r]]])
-            for u in rows.units[r].tolist():
-                if u >= 2 * n and b >= 0:  # a pin's unknown
-                    known = int(owner[u])
-                    if known < 0:
-                        owner[u] = b
-                    else:
-                        merged.union(known, b)
+    pin_rows = np.flatnonzero(rows.pin)
+    if not len(pin_rows):
+        return owner
+    index = system.pos  # a link's position unknown is twice its number
+    row_link = system.row_link
+    link_at = np.fromiter((index[row_link[r]] for r in pin_rows.tolist()), np.int64, len(pin_rows))
+    block = np.repeat(start[link_at // 2], 2)
+    units = rows.units[pin_rows].reshape(-1)  # each pin row's units, in row order
+    claims = np.flatnonzero((units >= 2 * n) & (block >= 0))  # a pin's unknown, by a block
+    if not len(claims):
+        return owner
+    pin, block = units[claims], block[claims]
+    # the first row to claim a pin gives it its block; each later claim merges with that block
+    by_pin = np.argsort(pin, kind="stable")
+    first = np.r_[True, pin[by_pin][1:] != pin[by_pin][:-1]]
+    owner[pin[by_pin][first]] = block[by_pin][first]
+    later = np.sort(by_pin[~first])
+    for known, b in zip(owner[pin[later]].tolist(), block[later].tolist(), strict=True):
+        merged.union(known, b)
     return owner
 
 
@@ -703,11 +712,8 @@ class Dependencies(Collection):
     @classmethod
     def of(cls, edges: Iterable[tuple[int, int]]) -> Dependencies:
         """The ``edges`` in their iteration order."""
-        sources, targets = array("i"), array("i")
-        for u, v in edges:
-            sources.append(u)
-            targets.append(v)
-        return cls(sources, targets)
+        flat = array("i", itertools.chain.from_iterable(edges))
+        return cls(flat[0::2], flat[1::2])
 
     def __iter__(self) -> Iterator[tuple[int, int]]:
         return zip(self.sources, self.targets, strict=True)

@@ -375,7 +375,7 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
 
 def _pair_role_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
     """``flat=`` and ``roller=`` name links of their own pair, and not the same one."""
-    for p in m.pairs:
+    for p in m.pairs_with_options():
         if p.flat is None and p.roller is None:
             continue
         for role, link in (("flat", p.flat), ("roller", p.roller)):
@@ -395,10 +395,29 @@ def _pieces(nodes: Iterable[str], edges: Iterable[tuple[str, str]]) -> list[set[
     return list(pieces.to_sets())
 
 
+def _connects(nodes: Sequence[str], edges: Iterable[tuple[str, str]]) -> bool:
+    """Whether ``edges`` connect all of ``nodes`` (a few: a union-find in a plain dict)."""
+    parent = {x: x for x in nodes}
+    pieces = len(parent)
+    for a, b in edges:
+        while parent[a] != a:
+            a = parent[a]
+        while parent[b] != b:
+            b = parent[b]
+        if a != b:
+            parent[a] = b
+            pieces -= 1
+    return pieces == 1
+
+
 def _hinge_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
     """The pairs at one point connect all its links, and close no cycle."""
+    pair = m.pair
     for h in m.shared_hinges:
-        parts = _pieces(h.links, [m.pair(i).links for i in h.pairs])
+        ends = [(q.a, q.b) for q in map(pair, h.pairs)]
+        if len(ends) == len(h.links) - 1 and _connects(h.links, ends):
+            continue  # the usual hinge: its pairs are a tree over its links
+        parts = _pieces(h.links, ends)
         if len(parts) > 1:
             first = m.pair(h.pairs[0])
             text = " | ".join(",".join(sorted(c)) for c in parts)

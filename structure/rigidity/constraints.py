@@ -108,7 +108,8 @@ class ConstraintSystem:
     row_pair: array
     row_link: tuple[str, ...]
     n_pair_rows: int
-    # the link and pin indexes, made on first use (the large paths never ask for them)
+    # the link and pin indexes, made on first use (the large paths never ask for them), and
+    # the row codes (made by the numpy layout)
     _indexes: dict = field(default_factory=dict, repr=False)
 
     @property
@@ -158,11 +159,13 @@ class ConstraintSystem:
         return 2 * len(self.links) + len(self.pins)
 
     def row_codes(self) -> np.ndarray:
-        """Each row's kind as its position in :class:`RowKind` (numpy, for the large paths)."""
-        kinds = np.array(self.row_kind, dtype=object)
-        codes = np.zeros(len(kinds), dtype=np.int8)
-        for code, kind in enumerate(_KINDS[1:], start=1):
-            codes[kinds == kind] = code
+        """Each row's kind as its position in :class:`RowKind` (numpy, for the large paths).
+
+        Made once (read-only): the rank and the group plan both read it.
+        """
+        codes = self._indexes.get("codes")
+        if codes is None:
+            codes = self._indexes["codes"] = _codes_of(self.row_kind)
         return codes
 
     def unknown_size(self, u: int) -> int:
@@ -207,8 +210,31 @@ class ConstraintSystem:
             self.row_pair + array("i", [0]) * len(kinds),
             self.row_link + tuple(links),
             self.n_pair_rows,
-            self._indexes,
+            _extended_indexes(self._indexes, kinds),
         )
+
+
+def _codes_of(kinds: Sequence[RowKind]) -> np.ndarray:
+    """:meth:`ConstraintSystem.row_codes` of the row kinds ``kinds``."""
+    objects = np.array(kinds, dtype=object)
+    codes = np.zeros(len(objects), dtype=np.int8)
+    for code, kind in enumerate(_KINDS[1:], start=1):
+        codes[objects == kind] = code
+    codes.setflags(write=False)
+    return codes
+
+
+def _extended_indexes(indexes: dict, kinds: Sequence[RowKind]) -> dict:
+    """A system's indexes for the same system with rows of ``kinds`` appended.
+
+    The link and pin indexes stay as they are; the row codes, if made, grow.
+    """
+    out = dict(indexes)
+    codes = out.get("codes")
+    if codes is not None:
+        out["codes"] = np.concatenate([codes, _codes_of(kinds)])
+        out["codes"].setflags(write=False)
+    return out
 
 
 class _Unknowns(FlatSequence):
@@ -325,6 +351,7 @@ def _system_by_numpy(
     adj_start = np.zeros(len(order) + 1, dtype=np.int64)
     np.cumsum(present.sum(axis=1), out=adj_start[1:])
     codes = np.concatenate([rows.kind, np.full(count, ROW_CODE[_PIN], dtype=np.int8)])[order]
+    codes.setflags(write=False)
     row_link = [""] * len(order)
     for position in np.flatnonzero(order >= len(rows.key)).tolist():
         row_link[position] = pins.links[int(order[position]) - len(rows.key)]
@@ -341,6 +368,7 @@ def _system_by_numpy(
         int_array(pairs[order], "i"),
         tuple(row_link),
         len(order),
+        {"codes": codes},
     )
 
 
@@ -439,7 +467,8 @@ def _compound_rows(mechanism: Mechanism, number: Mapping[str, int], pins_start: 
         return out
     pins: list[str] = []
     done: set[str] = set()
-    pairs = mechanism.pairs
+    pairs, pair_of, ground = mechanism.pairs, mechanism.pair, mechanism.ground
+    keys, pair_ids, adjs, links = out.key, out.pair, out.adj, out.links
     at_pins = compress(count(), map(compound.__contains__, map(attrgetter("point"), pairs)))
     for position in at_pins:  # the pairs at compound pins only: one pass in C finds them
         p = pairs[position]
@@ -449,19 +478,23 @@ def _compound_rows(mechanism: Mechanism, number: Mapping[str, int], pins_start: 
         done.add(h.point)
         first_pair: dict[str, int] = {}
         for pid in h.pairs:
-            for link in mechanism.pair(pid).links:
-                first_pair.setdefault(link, pid)
+            q = pair_of(pid)
+            first_pair.setdefault(q.a, pid)
+            first_pair.setdefault(q.b, pid)
         pin: tuple[int, ...] = ()
-        if mechanism.ground not in h.links:
+        if ground not in h.links:
             pin = (pins_start + len(pins),)
             pins.append(h.point)
-        for k, link in enumerate(x for x in h.links if x != mechanism.ground):
-            i = number[link]
-            out.key.append(position * _ROW_STRIDE + k)
-            out.pair.append(first_pair[link])
-            out.adj.append((*pin, 2 * i + 1, 2 * i))
-            out.links.append(link)
-    return _PinRows(out.key, out.pair, out.adj, out.links, tuple(pins))
+        key = position * _ROW_STRIDE
+        for link in h.links:
+            if link != ground:
+                i = number[link]
+                keys.append(key)
+                key += 1
+                pair_ids.append(first_pair[link])
+                adjs.append((*pin, 2 * i + 1, 2 * i))
+                links.append(link)
+    return _PinRows(keys, pair_ids, adjs, links, tuple(pins))
 
 
 def _driver_row(system: ConstraintSystem, link: str) -> tuple[RowKind, int, tuple[int, ...], str]:

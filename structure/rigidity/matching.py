@@ -123,9 +123,10 @@ class Matcher:
         unmatched: dict[int, int] = {}
         for r in range(first, first + n):
             size = sizes[r - first]
+            row = flat[start[r] : start[r + 1]]
             got = 0
             while got < size:
-                for u in flat[start[r] : start[r + 1]]:
+                for u in row:
                     if load[u] < cap[u]:
                         owner[2 * u + load[u]] = r
                         load[u] += 1
@@ -156,7 +157,7 @@ class Matcher:
         for r, u in enqueued.items():
             for free_u in adj[start[r] : start[r + 1]]:
                 if load[free_u] < cap[free_u]:
-                    self._flip(r0, r, free_u, {u: r0}, {r: u})
+                    self._give_way(r0, r, u, free_u)
                     return True
         self._stamp += 1
         stamp = self._stamp
@@ -183,6 +184,26 @@ class Matcher:
                             following.append(r2)
             frontier = following
         return False
+
+    def _give_way(self, r0: int, r: int, u: int, free_u: int) -> None:
+        """:meth:`_flip` of the path ``r0 -> u -> r -> free_u``: ``r`` gives ``u`` to ``r0``."""
+        owner, units = self._owner, self._units
+        owner[2 * free_u + self._load[free_u]] = r
+        self._load[free_u] += 1
+        k = 2 * u
+        if owner[k] == r and self.cap[u] == 2:
+            owner[k] = owner[k + 1]
+            owner[k + 1] = r0
+        elif owner[k] == r:
+            owner[k] = r0
+        else:
+            owner[k + 1] = r0
+        k = 2 * r
+        if units[k] == u:
+            units[k] = units[k + 1]
+        units[k + 1] = -1
+        units[k + (units[k] != -1)] = free_u
+        units[2 * r0 + (units[2 * r0] != -1)] = u
 
     def _flip(
         self,

@@ -35,6 +35,7 @@ from array import array
 from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
+from itertools import repeat
 from operator import attrgetter, itemgetter
 from typing import TYPE_CHECKING
 
@@ -758,22 +759,37 @@ def _decomposition(
     removed_pairs: tuple[int, ...],
 ) -> Decomposition:
     """The groups of the merged blocks, in ``order``, and their dependency DAG."""
-    index = {b: i for i, b in enumerate(order)}
     level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
     compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
-    for b, links in members.items():
-        position = index[b]
-        for link in links:
-            level[link] = position
-    dag_edges = [(index[u], index[v]) for u, v in edges]
-    dag_edges.sort(key=_source)  # networkx's DiGraph order: by source, then as added (stable)
-    dag = tuple(dag_edges)
-    del index, dag_edges  # the build's peak memory is when its groups are all made
+    for i, b in enumerate(order):
+        level.update(zip(members[b], repeat(i)))
+    dag = _dag_edges(order, edges)
     groups = tuple(
         _build_group(members[b], _group_pairs(mechanism, members[b], level, i, compound))
         for i, b in enumerate(order)
     )
     return Decomposition(mechanism, tuple(drivers), groups, dag, removed_links, removed_pairs)
+
+
+def _dag_edges(
+    order: Sequence[int], edges: Collection[tuple[int, int]]
+) -> tuple[tuple[int, int], ...]:
+    """The ``edges`` between merged blocks as edges between their places in ``order``.
+
+    Sorted by source, then as the edges come (networkx's DiGraph order); a
+    large mechanism's (a :class:`Dependencies`) renumbered by numpy.
+    """
+    if isinstance(edges, Dependencies) and len(edges) >= NUMPY_ROWS:
+        place = np.zeros(max(order) + 1, dtype=np.int64)
+        place[order] = np.arange(len(order))
+        sources = place[np.frombuffer(edges.sources, dtype=np.intc)]
+        targets = place[np.frombuffer(edges.targets, dtype=np.intc)]
+        by_source = np.argsort(sources, kind="stable")
+        return tuple(zip(sources[by_source].tolist(), targets[by_source].tolist(), strict=True))
+    index = {b: i for i, b in enumerate(order)}
+    dag_edges = [(index[u], index[v]) for u, v in edges]
+    dag_edges.sort(key=_source)
+    return tuple(dag_edges)
 
 
 def _topological_order(

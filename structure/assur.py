@@ -602,10 +602,9 @@ def _block_owners(
     pin_rows = np.flatnonzero(rows.pin)
     if not len(pin_rows):
         return owner
-    index = system.pos  # a link's position unknown is twice its number
-    row_link = system.row_link
-    link_at = np.fromiter((index[row_link[r]] for r in pin_rows.tolist()), np.int64, len(pin_rows))
-    block = np.repeat(start[link_at // 2], 2)
+    # a pin row's last unknown is its link's position, twice the link's number
+    link_at = rows.adj[rows.adj_start[pin_rows + 1] - 1] // 2
+    block = np.repeat(start[link_at], 2)
     units = rows.units[pin_rows].reshape(-1)  # each pin row's units, in row order
     claims = np.flatnonzero((units >= 2 * n) & (block >= 0))  # a pin's unknown, by a block
     if not len(claims):
@@ -675,7 +674,7 @@ def _merge_cycles(
         members = list(merged)
         root[members] = [merged[b] for b in members]
         merged_owner = np.where(owner >= 0, root[np.maximum(owner, 0)], -1).astype(np.int32)
-        sources, targets = _block_dependencies(rows, merged_owner)
+        sources, targets = _first_of_each(*_block_dependencies(rows, merged_owner))
         nodes = np.sort(root[root >= 0])
         nodes = nodes[np.r_[True, nodes[1:] != nodes[:-1]][: len(nodes)]]
         first_link = np.full(n_blocks, len(start), dtype=np.int64)
@@ -732,6 +731,17 @@ def _numbered_edges(
     """The ``edges`` between sorted ``nodes`` as two arrays of node numbers, in set order."""
     pairs = np.array(list(edges), dtype=np.int64).reshape(-1, 2)
     return np.searchsorted(nodes, pairs[:, 0]), np.searchsorted(nodes, pairs[:, 1])
+
+
+def _first_of_each(sources: np.ndarray, targets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The edges ``(sources[k], targets[k])`` without repeats, each where it first comes.
+
+    A set made of them is the set made of all (a repeat leaves a set as it
+    is), for less than half of the tuples.
+    """
+    key = sources.astype(np.int64) * (int(targets.max(initial=0)) + 1) + targets
+    first = np.sort(np.unique(key, return_index=True)[1])
+    return sources[first], targets[first]
 
 
 def _block_dependencies(rows: _PairRows, merged_owner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

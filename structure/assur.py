@@ -903,7 +903,7 @@ def _group_pairs(
         for p in pairs_of(link):
             a = p.a
             other = p.b if link == a else a
-            if compound and p.kind is _R and p.point and p.point in compound:
+            if compound and p.point in compound and p.kind is _R:  # (None is in no dict)
                 if p.point not in seen_hinges:
                     seen_hinges.add(p.point)
                     n_external += _hinge_pairs(

@@ -217,6 +217,11 @@ class Decomposition:
         return f"{len(self.drivers)} = " + " + ".join(terms)
 
 
+_set_group_links, _set_group_pairs, _set_group_class, _set_group_order, _set_group_kind = (
+    getattr(AssurGroup, name).__set__ for name in AssurGroup.__slots__
+)
+
+
 def driver_candidates(mechanism: Mechanism) -> tuple[str, ...]:
     """Links joined to the ground by an R or P pair (or a pin shared with it), in order."""
     out: dict[str, None] = {}
@@ -852,8 +857,13 @@ def _build_group(links: list[str], found: _GroupPairs) -> AssurGroup:
             "(3·links = 2·pairs fails)",
             links,
         )
-    kind = _dyad_kind(links, pairs) if len(links) == 2 else None
-    return AssurGroup(tuple(links), tuple(pairs), classify_group(links, joints), n_external, kind)
+    group = object.__new__(AssurGroup)  # AssurGroup(...), its slots set directly (_group_pair)
+    _set_group_links(group, tuple(links))
+    _set_group_pairs(group, tuple(pairs))
+    _set_group_class(group, classify_group(links, joints))
+    _set_group_order(group, n_external)
+    _set_group_kind(group, _dyad_kind(links, pairs) if len(links) == 2 else None)
+    return group
 
 
 def _dyad_kind(links: list[str], pairs: list[GroupPair]) -> DyadKind | None:

@@ -149,16 +149,17 @@ class Matcher:
         adj, start, owner, load, cap = self._adj, self._start, self._owner, self._load, self.cap
         # the usual case first: a row next door gives way and takes a free unit of its own
         # (what the search below finds first when the path is that short)
-        enqueued: dict[int, int] = {}  # row -> the unit it was reached through
+        # (rows in the order the search reaches them, each through its first unit; the first
+        # that has a free unit is the search's first find)
+        tried = [r0]
         for u in adj[start[r0] : start[r0 + 1]]:
             for r in owner[2 * u : 2 * u + load[u]]:
-                if r != r0 and r not in enqueued:
-                    enqueued[r] = u
-        for r, u in enqueued.items():
-            for free_u in adj[start[r] : start[r + 1]]:
-                if load[free_u] < cap[free_u]:
-                    self._give_way(r0, r, u, free_u)
-                    return True
+                if r not in tried:
+                    for free_u in adj[start[r] : start[r + 1]]:
+                        if load[free_u] < cap[free_u]:
+                            self._give_way(r0, r, u, free_u)
+                            return True
+                    tried.append(r)
         self._stamp += 1
         stamp = self._stamp
         useen, rseen = self._useen, self._rseen

@@ -35,7 +35,6 @@ from array import array
 from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from itertools import repeat
 from operator import attrgetter, itemgetter
 from typing import TYPE_CHECKING
 
@@ -171,6 +170,12 @@ class AssurGroup:
         return f"AssurGroup({self.label}, order {self.order}{kind})"
 
 
+# a large mechanism's build makes tens of thousands of groups: their slots are set directly
+_set_group_links, _set_group_pairs, _set_group_class, _set_group_order, _set_group_kind = (
+    getattr(AssurGroup, name).__set__ for name in AssurGroup.__slots__
+)
+
+
 @dataclass(frozen=True)
 class Decomposition:
     """Groups in solve order, their dependency DAG, and what was set aside.
@@ -215,11 +220,6 @@ class Decomposition:
         """``'1 = 1 + 0 + 0'``: W equals one per driver plus zero per group."""
         terms = ["1"] * len(self.drivers) + ["0"] * len(self.groups)
         return f"{len(self.drivers)} = " + " + ".join(terms)
-
-
-_set_group_links, _set_group_pairs, _set_group_class, _set_group_order, _set_group_kind = (
-    getattr(AssurGroup, name).__set__ for name in AssurGroup.__slots__
-)
 
 
 def driver_candidates(mechanism: Mechanism) -> tuple[str, ...]:
@@ -777,7 +777,7 @@ def _decomposition(
     level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
     compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
     for i, b in enumerate(order):
-        level.update(zip(members[b], repeat(i)))
+        level.update(zip(members[b], itertools.repeat(i)))
     dag = _dag_edges(order, edges)
     groups = tuple(
         _build_group(members[b], _group_pairs(mechanism, members[b], level, i, compound))

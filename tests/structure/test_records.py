@@ -99,6 +99,24 @@ def test_pairs_of_in_file_order_with_ids_that_are_not_positions() -> None:
     assert list(m.pairs_of("9")) == []
     assert m.pair(30) is pairs[2]
     assert m.has_link("2") and not m.has_link("9")
+    # the numbers of each pair's ends (the ground 0) and the ids, as the constraint rows read them
+    assert m.pair_ends().tolist() == [[0, 1], [1, 2], [2, 0], [1, 0]]
+    assert m.pair_ids().tolist() == [10, 20, 30, 40]
+    in_place = Mechanism(tuple(dataclasses.replace(p, id=k) for k, p in enumerate(pairs, 1)))
+    assert in_place.pair_ids().tolist() == [1, 2, 3, 4]
+
+
+def test_pairs_with_options_are_those_with_any_option_but_the_angle() -> None:
+    pairs = (
+        make_pair(1, "R", "0", "1", "A"),
+        make_pair(2, "P", "1", "2", "B", angle=30),
+        make_pair(3, "H", "2", "3", "K", roller="3"),
+        make_pair(4, "R", "3", "0", "D", circle=0.2),
+        make_pair(5, "R", "2", "0", "E"),
+    )
+    m = Mechanism(pairs)
+    expected = [p.id for p in pairs if p.flat or p.roller or p.circle is not None]
+    assert [p.id for p in m.pairs_with_options()] == expected == [3, 4]
 
 
 def test_a_pair_of_a_link_to_itself_counts_at_both_ends() -> None:

@@ -98,3 +98,29 @@ def test_from_pairs_takes_kinds_numbers_as_names_and_no_point():
     m = Mechanism.from_pairs([(0, 1, PairKind.R, None), (1, 2, "R", "B"), (2, 0, "R")])
     assert [(p.a, p.b, p.point) for p in m.pairs] == [("0", "1", None), ("1", "2", "B"),
                                                        ("2", "0", None)]  # fmt: skip
+
+
+def test_a_paused_collector_resumes_with_the_phase_objects_in_the_oldest_generation() -> None:
+    import gc
+
+    from structure.utils import paused_gc
+
+    was = gc.isenabled()
+    gc.enable()
+    try:
+        with paused_gc():
+            assert not gc.isenabled()
+            made = [[k] for k in range(20000)]
+        assert gc.isenabled()
+        assert gc.get_count()[0] < 1000  # not a young generation of 20 000 lists to pass over
+        assert any(made[0] is x for x in gc.get_objects(generation=2))
+        # a program's own frozen objects stay frozen
+        gc.freeze()
+        frozen = gc.get_freeze_count()
+        with paused_gc():
+            more = [[k] for k in range(100)]
+        assert gc.get_freeze_count() == frozen and len(more) == 100
+    finally:
+        gc.unfreeze()
+        if not was:
+            gc.disable()

@@ -188,22 +188,10 @@ class Matcher:
 
     def _give_way(self, r0: int, r: int, u: int, free_u: int) -> None:
         """:meth:`_flip` of the path ``r0 -> u -> r -> free_u``: ``r`` gives ``u`` to ``r0``."""
-        owner, units = self._owner, self._units
-        owner[2 * free_u + self._load[free_u]] = r
+        self._owner[2 * free_u + self._load[free_u]] = r
         self._load[free_u] += 1
-        k = 2 * u
-        if owner[k] == r and self.cap[u] == 2:
-            owner[k] = owner[k + 1]
-            owner[k + 1] = r0
-        elif owner[k] == r:
-            owner[k] = r0
-        else:
-            owner[k + 1] = r0
-        k = 2 * r
-        if units[k] == u:
-            units[k] = units[k + 1]
-        units[k + 1] = -1
-        units[k + (units[k] != -1)] = free_u
+        self._pass_on(r, u, r0, free_u)
+        units = self._units
         units[2 * r0 + (units[2 * r0] != -1)] = u
 
     def _flip(
@@ -215,30 +203,35 @@ class Matcher:
         came_through: dict[int, int],
     ) -> None:
         # r takes the free unit; each row on the path gives its unit to the row before it
-        owner, units = self._owner, self._units
-        owner[2 * free_u + self._load[free_u]] = r
+        self._owner[2 * free_u + self._load[free_u]] = r
         self._load[free_u] += 1
         received = free_u
         while r != r0:
             u = came_through[r]
             taker = reached_by[u]
-            # u's rows less r (the others move up), then the taker last
-            k = 2 * u
-            if owner[k] == r and self.cap[u] == 2:
-                owner[k] = owner[k + 1]
-                owner[k + 1] = taker
-            elif owner[k] == r:
-                owner[k] = taker
-            else:
-                owner[k + 1] = taker
-            # r's units less u (the first one), then the unit it received last
-            k = 2 * r
-            if units[k] == u:
-                units[k] = units[k + 1]
-            units[k + 1] = -1
-            units[k + (units[k] != -1)] = received
+            self._pass_on(r, u, taker, received)
             received, r = u, taker
+        units = self._units
         units[2 * r + (units[2 * r] != -1)] = received
+
+    def _pass_on(self, r: int, u: int, taker: int, received: int) -> None:
+        """Row ``r`` gives its unit of ``u`` to row ``taker`` and holds ``received`` instead."""
+        owner, units = self._owner, self._units
+        # u's rows less r (the others move up), then the taker last
+        k = 2 * u
+        if owner[k] == r and self.cap[u] == 2:
+            owner[k] = owner[k + 1]
+            owner[k + 1] = taker
+        elif owner[k] == r:
+            owner[k] = taker
+        else:
+            owner[k + 1] = taker
+        # r's units less u (the first one), then the unit it received last
+        k = 2 * r
+        if units[k] == u:
+            units[k] = units[k + 1]
+        units[k + 1] = -1
+        units[k + (units[k] != -1)] = received
 
     @property
     def free_units(self) -> list[tuple[int, int]]:

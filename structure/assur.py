@@ -53,7 +53,7 @@ from .rigidity.constraints import (
 )
 from .rigidity.matching import NUMPY_ROWS, Assignment, block_arrays, strongly_connected
 from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
-from .utils import UnionFind
+from .utils import UnionFind, count_components, slot_setters
 from .validation import validated
 
 if TYPE_CHECKING:
@@ -115,9 +115,7 @@ class GroupPair:
 # a group build makes one GroupPair per pair of the mechanism: its slots are set directly,
 # as a frozen dataclass's __init__ does but without its object.__setattr__ per field
 # (unpacking the setters checks at import that they are all the fields)
-_set_kind, _set_links, _set_point, _set_external, _set_pair = (
-    getattr(GroupPair, name).__set__ for name in GroupPair.__slots__
-)
+_set_kind, _set_links, _set_point, _set_external, _set_pair = slot_setters(GroupPair)
 
 
 def _group_pair(
@@ -172,7 +170,7 @@ class AssurGroup:
 
 # a large mechanism's build makes tens of thousands of groups: their slots are set directly
 _set_group_links, _set_group_pairs, _set_group_class, _set_group_order, _set_group_kind = (
-    getattr(AssurGroup, name).__set__ for name in AssurGroup.__slots__
+    slot_setters(AssurGroup)
 )
 
 
@@ -987,7 +985,7 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
         for x in j:
             degree[x] += 1
     most = max(degree.values())
-    components = _components(links, joints)
+    components = count_components(links, joints)
     if n_edges == len(links) + len(joints) - components:  # a forest: no contour
         return max(2, most)
     if (
@@ -997,32 +995,6 @@ def classify_group(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> i
     ):
         return max(2, len(joints))  # a ring: the one contour runs through every joint
     return max(2, most, _longest_contour(links, joints))
-
-
-def _components(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:
-    """Connected components of the bipartite graph links ↔ joints (a joint joins ≥ 2 links).
-
-    A union-find over the links in a plain dict: each joint merges its links.
-    """
-    parent = {x: x for x in links}
-    count = len(links)
-    for joint in joints:
-        if not joint:
-            continue
-        root = _root(parent, joint[0])
-        for x in joint[1:]:
-            other = _root(parent, x)
-            if other != root:
-                parent[other] = root
-                count -= 1
-    return count
-
-
-def _root(parent: dict[str, str], x: str) -> str:
-    """The representative of ``x`` in the union-find ``parent`` (halving the path)."""
-    while parent[x] != x:
-        parent[x] = x = parent[parent[x]]
-    return x
 
 
 def _longest_contour(links: Sequence[str], joints: Sequence[tuple[str, ...]]) -> int:

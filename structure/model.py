@@ -39,6 +39,7 @@ import numpy as np
 
 from .errors import EdgeListError, EdgeListProblem, StatementError
 from .kinds import LoadKind, PairKind
+from .utils import slot_setters
 from .validation import (
     DRIVER_KEYS,
     LOAD_KINDS,
@@ -321,9 +322,8 @@ Pair.__setattr__ = _frozen_setattr  # type: ignore[method-assign]
 Pair.__delattr__ = _frozen_delattr  # type: ignore[method-assign]
 
 #: the setters of the slots of :class:`Pair`, in the order :func:`_fill_pair` unpacks them
-_PAIR_SETTERS = tuple(
-    getattr(Pair, name).__set__
-    for name in ("id", "kind", "a", "b", "point", "angle_deg", "line_no", "_rare_options")
+_PAIR_SETTERS = slot_setters(
+    Pair, ("id", "kind", "a", "b", "point", "angle_deg", "line_no", "_rare_options")
 )
 
 

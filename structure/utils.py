@@ -11,7 +11,15 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["FlatSequence", "Ragged", "UnionFind", "int_array", "paused_gc"]
+__all__ = [
+    "FlatSequence",
+    "Ragged",
+    "UnionFind",
+    "count_components",
+    "int_array",
+    "paused_gc",
+    "slot_setters",
+]
 
 
 @contextmanager
@@ -195,3 +203,43 @@ class Ragged(FlatSequence):
         """Every item as a tuple, in one pass."""
         values, start = self.values, self.start
         return [tuple(values[a:b]) for a, b in itertools.pairwise(start)]
+
+
+def count_components(nodes: Iterable[Hashable], joints: Iterable[Sequence[Hashable]]) -> int:
+    """Connected components of a small graph whose joints each join some ``nodes``.
+
+    A union-find in a plain dict (path halving): no object per call, for the
+    tens of thousands of groups and hinges a large mechanism has.
+
+    >>> count_components("abcd", [("a", "b"), ("b", "c", "a")])
+    2
+    """
+    parent = {x: x for x in nodes}
+    count = len(parent)
+    for joint in joints:
+        if not joint:
+            continue
+        root = _root(parent, joint[0])
+        for x in joint[1:]:
+            other = _root(parent, x)
+            if other != root:
+                parent[other] = root
+                count -= 1
+    return count
+
+
+def _root(parent: dict, x: Hashable) -> Hashable:
+    """The representative of ``x`` in the union-find ``parent`` (halving the path)."""
+    while parent[x] != x:
+        parent[x] = x = parent[parent[x]]
+    return x
+
+
+def slot_setters(cls: type, names: Sequence[str] | None = None) -> tuple[Any, ...]:
+    """The setters of ``cls``'s slots (default: all, in order), to fill a new frozen record.
+
+    A frozen dataclass's ``__init__`` sets each field through
+    ``object.__setattr__``; the slots' own setters do it in half the time,
+    and a large mechanism makes hundreds of thousands of records.
+    """
+    return tuple(getattr(cls, name).__set__ for name in (names or cls.__slots__))

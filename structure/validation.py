@@ -41,7 +41,7 @@ from .errors import (
     clipped,
 )
 from .kinds import LoadKind, PairKind
-from .utils import UnionFind
+from .utils import UnionFind, count_components
 
 if TYPE_CHECKING:  # the model builds on these checks: only its types are needed here
     from .model import Mechanism
@@ -395,27 +395,12 @@ def _pieces(nodes: Iterable[str], edges: Iterable[tuple[str, str]]) -> list[set[
     return list(pieces.to_sets())
 
 
-def _connects(nodes: Sequence[str], edges: Iterable[tuple[str, str]]) -> bool:
-    """Whether ``edges`` connect all of ``nodes`` (a few: a union-find in a plain dict)."""
-    parent = {x: x for x in nodes}
-    pieces = len(parent)
-    for a, b in edges:
-        while parent[a] != a:
-            a = parent[a]
-        while parent[b] != b:
-            b = parent[b]
-        if a != b:
-            parent[a] = b
-            pieces -= 1
-    return pieces == 1
-
-
 def _hinge_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
     """The pairs at one point connect all its links, and close no cycle."""
     pair = m.pair
     for h in m.shared_hinges:
         ends = [(q.a, q.b) for q in map(pair, h.pairs)]
-        if len(ends) == len(h.links) - 1 and _connects(h.links, ends):
+        if len(ends) == len(h.links) - 1 and count_components(h.links, ends) == 1:
             continue  # the usual hinge: its pairs are a tree over its links
         parts = _pieces(h.links, ends)
         if len(parts) > 1:

@@ -10,8 +10,10 @@ edge-list file, then timed:
   groups) + the ``--json`` answer written (compact and streamed, to a null
   stream), what ``assur classify --json FILE`` costs.
 
-Best of a few runs for small sizes, one or two at 10^5. The groups found are
-compared with the groups the generator attached (as sets of link sets).
+Times are medians of interleaved rounds: each round reads then analyses every
+size once, so a slow spell of the shared machine falls on all of them alike.
+The last round's groups are compared with the groups the generator attached
+(as sets of link sets).
 
 Goals (issue 12): at 10^5 links the analysis takes at most 3× the read; from
 10^4 to 10^5 links its time grows at most 11× (near-linear).
@@ -19,7 +21,7 @@ Goals (issue 12): at 10^5 links the analysis takes at most 3× the read; from
 Usage::
 
     python benchmarks/structure_scale.py [--sizes 1000 10000 100000]
-        [--seed 1] [--compound 0.2] [--kinds RRR RRP ...] [--repeat N] [--budget S]
+        [--seed 1] [--compound 0.2] [--kinds RRR RRP ...] [--rounds N] [--budget S]
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ import argparse
 import gc
 import os
 import signal
+import statistics
 import sys
 import tempfile
 import time
@@ -50,17 +53,6 @@ GOAL_GROWTH = 11.0  # analysis time 10^4 -> 10^5
 
 class Budget(Exception):
     """The analysis ran past the time budget."""
-
-
-@dataclass
-class Row:
-    links: int
-    lines: int
-    read: float
-    analysis: float | None = None
-    failure: str = ""
-    runs: int = 0
-    check: str = ""
 
 
 class _Null:
@@ -87,83 +79,97 @@ def networkx_read(path: str) -> nx.MultiGraph:
     return graph
 
 
-def _repeats(n: int, forced: int | None) -> int:
-    if forced:
-        return forced
-    if n <= 2000:
-        return 5
-    if n <= 20000:
-        return 3
-    return 2
-
-
 def _on_alarm(signum, frame):
     raise Budget
 
 
-def _best(fn, runs: int, budget: float) -> tuple[float, object]:
-    """Best wall time of ``fn`` over ``runs`` runs; stop repeating once over ``budget`` s."""
-    best, result, spent = float("inf"), None, 0.0
-    for _ in range(runs):
-        result = None  # the previous run's objects are not kept alive while timing the next
-        gc.collect()
+def _timed(fn, budget: float) -> tuple[float, object]:
+    """Wall time of one run of ``fn`` (after a full collection), stopped past ``budget`` s."""
+    gc.collect()
+    old = signal.signal(signal.SIGALRM, _on_alarm)
+    signal.setitimer(signal.ITIMER_REAL, max(budget, 1e-3))
+    try:
         t0 = time.perf_counter()
         result = fn()
-        dt = time.perf_counter() - t0
-        best, spent = min(best, dt), spent + dt
-        if spent > budget / 4:
-            break
-    return best, result
+        return time.perf_counter() - t0, result
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
 
 
-def measure(n: int, args: argparse.Namespace, workdir: str) -> Row:
+@dataclass
+class Case:
+    """One size's file, the groups the generator attached, and its timings so far."""
+
+    links: int
+    lines: int
+    path: str
+    attached: set[frozenset]
+    reads: list[float]
+    analyses: list[float]
+    spent: float = 0.0
+    failure: str = ""
+    check: str = ""
+
+
+def prepare(n: int, args: argparse.Namespace, workdir: str) -> Case:
+    """Generate the size-``n`` mechanism and write it to an edge-list file."""
     mechanism, attached = random_mechanism_with_groups(
         n, args.seed, kinds=args.kinds, compound=args.compound
     )
     path = os.path.join(workdir, f"random_{n}.edges")
     text = write_edgelist(mechanism)
     Path(path).write_text(text, encoding="utf-8")
-    lines = text.count("\n")
-    links = len(mechanism.moving_links)
-    del mechanism, text  # time only the reading and the analysis, not the generator's objects
-    runs = _repeats(n, args.repeat)
-    read_time, _ = _best(lambda: networkx_read(path), runs, args.budget)
-    row = Row(links, lines, read_time)
+    return Case(
+        len(mechanism.moving_links),
+        text.count("\n"),
+        path,
+        {frozenset(g) for g in attached},
+        [],
+        [],
+    )
 
-    def whole():
-        report = analyze(read_edgelist(path))
-        write_report_json(report, _Null())  # type: ignore[arg-type]
-        return report
 
-    old = signal.signal(signal.SIGALRM, _on_alarm)
-    signal.setitimer(signal.ITIMER_REAL, args.budget)
+def _whole(path: str):
+    """What ``assur classify --json FILE`` costs: read, analyse, write the JSON answer."""
+    report = analyze(read_edgelist(path))
+    write_report_json(report, _Null())  # type: ignore[arg-type]
+    return report
+
+
+def run_round(case: Case, args: argparse.Namespace, last: bool) -> None:
+    """One read then one analysis of ``case``; the last round also checks the groups found."""
+    if case.failure:
+        return
+    case.reads.append(_timed(lambda: networkx_read(case.path), args.budget)[0])
     t0 = time.perf_counter()
     try:
-        row.analysis, report = _best(whole, runs, args.budget)
+        dt, report = _timed(lambda: _whole(case.path), args.budget - case.spent)
     except Budget:
-        row.failure = f"stopped after {time.perf_counter() - t0:.1f} s (budget {args.budget:g} s)"
-        return row
+        case.failure = f"stopped after {case.spent + time.perf_counter() - t0:.1f} s " \
+                       f"(budget {args.budget:g} s)"  # fmt: skip
+        return
     except MechanismError as exc:
         first = str(exc).splitlines()[0]
-        row.failure = f"{type(exc).__name__} after {time.perf_counter() - t0:.1f} s: {first}"
-        return row
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
-    expected = {frozenset(g) for g in attached}
-    found = {frozenset(g.links) for g in report.groups}
-    bad = len(expected - found) + len(found - expected)
-    row.check = (
-        "groups match"
-        if bad == 0
-        else (
-            f"MISMATCH: {len(expected - found)} attached group(s) not found, "
-            f"{len(found - expected)} found group(s) not attached"
+        case.failure = f"{type(exc).__name__} after {time.perf_counter() - t0:.1f} s: {first}"
+        return
+    case.analyses.append(dt)
+    case.spent += dt
+    if last:
+        found = {frozenset(g.links) for g in report.groups}
+        missing, extra = len(case.attached - found), len(found - case.attached)
+        case.check = (
+            "groups match"
+            if missing == extra == 0
+            else f"MISMATCH: {missing} attached group(s) not found, "
+            f"{extra} found group(s) not attached"
         )
-    )
-    if report.mobility.W != 1:
-        row.check += f"; W = {report.mobility.W}, expected 1"
-    return row
+        if report.mobility.W != 1:
+            case.check += f"; W = {report.mobility.W}, expected 1"
+
+
+def median(times: list[float]) -> float | None:
+    return statistics.median(times) if times else None
 
 
 def _fmt(x: float | None) -> str:
@@ -176,9 +182,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--compound", type=float, default=0.2)
     parser.add_argument("--kinds", nargs="+", default=list(GROUP_KINDS), choices=list(GROUP_KINDS))
-    parser.add_argument("--repeat", type=int, default=None, help="runs per timing (default 5/3/2)")
+    parser.add_argument("--rounds", type=int, default=5, help="interleaved rounds (default 5)")
     parser.add_argument(
-        "--budget", type=float, default=600.0, help="seconds allowed per size for the analysis"
+        "--budget", type=float, default=600.0, help="seconds allowed per size for the analyses"
     )
     args = parser.parse_args(argv)
 
@@ -187,48 +193,52 @@ def main(argv: list[str] | None = None) -> int:
         f"goals: at 10^5 links analysis <= {GOAL_RATIO:g}x read; "
         f"10^4 -> 10^5 analysis growth <= {GOAL_GROWTH:g}x"
     )
-    header = (
+    print(
+        f"medians of {args.rounds} interleaved rounds (each round: every size, read then analysis)"
+    )
+    with tempfile.TemporaryDirectory() as workdir:
+        cases = [prepare(n, args, workdir) for n in args.sizes]
+        for r in range(args.rounds):
+            for case in cases:
+                run_round(case, args, last=r == args.rounds - 1)
+    print(
         f"{'links':>8} {'lines':>8} {'nx read s':>9} {'analysis s':>11} {'ratio':>7} {'growth':>7}"
     )
-    rows: list[Row] = []
-    with tempfile.TemporaryDirectory() as workdir:
-        print(header, flush=True)
-        for n in args.sizes:
-            row = measure(n, args, workdir)
-            prev = rows[-1] if rows else None
-            ratio = None if row.analysis is None else row.analysis / row.read
-            growth = (
-                row.analysis / prev.analysis
-                if prev is not None and prev.analysis and row.analysis is not None
-                else None
-            )
-            ratio_s = "—" if ratio is None else f"{ratio:.1f}x"
-            growth_s = "—" if growth is None else f"{growth:.1f}x"
-            print(
-                f"{row.links:>8} {row.lines:>8} {_fmt(row.read):>9} {_fmt(row.analysis):>11} "
-                f"{ratio_s:>7} {growth_s:>7}  {row.check or row.failure}",
-                flush=True,
-            )
-            rows.append(row)
+    prev: Case | None = None
+    for case in cases:
+        read, analysis = median(case.reads), median(case.analyses)
+        ratio = None if analysis is None or case.failure else analysis / read
+        growth = (
+            analysis / median(prev.analyses)
+            if prev is not None and prev.analyses and analysis is not None and not case.failure
+            else None
+        )
+        ratio_s = "—" if ratio is None else f"{ratio:.1f}x"
+        growth_s = "—" if growth is None else f"{growth:.1f}x"
+        print(
+            f"{case.links:>8} {case.lines:>8} {_fmt(read):>9} "
+            f"{_fmt(None if case.failure else analysis):>11} "
+            f"{ratio_s:>7} {growth_s:>7}  {case.failure or case.check}"
+        )
+        prev = case
 
     verdicts: list[str] = []
-    big = [r for r in rows if r.links >= 99_999]
-    for r in big:
-        if r.analysis is None:
-            verdicts.append(f"ratio goal at {r.links} links: FAILED ({r.failure})")
+    for case in (c for c in cases if c.links >= 99_999):
+        if case.failure:
+            verdicts.append(f"ratio goal at {case.links} links: FAILED ({case.failure})")
         else:
-            ok = r.analysis <= GOAL_RATIO * r.read
+            ratio = median(case.analyses) / median(case.reads)
             verdicts.append(
-                f"ratio goal at {r.links} links: {r.analysis / r.read:.1f}x "
-                f"(<= {GOAL_RATIO:g}x) {'met' if ok else 'FAILED'}"
+                f"ratio goal at {case.links} links: {ratio:.1f}x (<= {GOAL_RATIO:g}x) "
+                f"{'met' if ratio <= GOAL_RATIO else 'FAILED'}"
             )
-    small = next((r for r in rows if 9_999 <= r.links <= 10_001), None)
-    large = next((r for r in rows if 99_999 <= r.links <= 100_001), None)
+    small = next((c for c in cases if 9_999 <= c.links <= 10_001), None)
+    large = next((c for c in cases if 99_999 <= c.links <= 100_001), None)
     if small is not None and large is not None:
-        if small.analysis is None or large.analysis is None:
+        if small.failure or large.failure:
             verdicts.append("growth goal 10^4 -> 10^5: FAILED (an analysis did not finish)")
         else:
-            g = large.analysis / small.analysis
+            g = median(large.analyses) / median(small.analyses)
             verdicts.append(
                 f"growth goal 10^4 -> 10^5: {g:.1f}x (<= {GOAL_GROWTH:g}x) "
                 f"{'met' if g <= GOAL_GROWTH else 'FAILED'}"
@@ -238,7 +248,7 @@ def main(argv: list[str] | None = None) -> int:
     for v in verdicts:
         print(v)
     failed = any("FAILED" in v for v in verdicts) or any(
-        r.failure or r.check.startswith("MISMATCH") for r in rows
+        c.failure or c.check.startswith("MISMATCH") for c in cases
     )
     return 1 if failed else 0
 

@@ -32,10 +32,10 @@ from __future__ import annotations
 import heapq
 import itertools
 from array import array
-from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from operator import attrgetter, itemgetter
+from operator import attrgetter
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -179,9 +179,9 @@ class Decomposition:
     """Groups in solve order, their dependency DAG, and what was set aside.
 
     ``dag_edges`` are the edges ``(i, j)`` of the dependency DAG between
-    group indices: group ``j`` is attached to a link of group ``i``; ``dag``
-    is that DAG as a frozen networkx ``DiGraph``, built when asked for (so
-    that classifying does not import networkx). ``removed_links`` and
+    group indices, sorted: group ``j`` is attached to a link of group ``i``;
+    ``dag`` is that DAG as a frozen networkx ``DiGraph``, built when asked
+    for (so that classifying does not import networkx). ``removed_links`` and
     ``removed_pairs`` are the redundant links/pairs left out of the
     decomposition (``mechanism`` is what remains).
     """
@@ -453,13 +453,14 @@ def _plan_from_blocks(
     )
 
 
-#: the merged blocks (each named by a member), the DAG's edges, each moving link's merged block
-_MergedBlocks = tuple[list[int], set[tuple[int, int]], list[int]]
+#: the merged blocks (each named by a member), the DAG's edges (sorted), each moving link's
+#: merged block
+_MergedBlocks = tuple[list[int], list[tuple[int, int]], list[int]]
 
 
 def _merged_blocks_by_numpy(
     drivers: Sequence[str], analysis: RankAnalysis
-) -> tuple[list[int], set[tuple[int, int]], list[int], bool]:
+) -> tuple[list[int], Dependencies, list[int], bool]:
     """The merged blocks of :func:`_plan_from_blocks`, found with numpy.
 
     The fourth value tells whether every dependency goes from a block whose
@@ -537,7 +538,7 @@ def _merged_blocks_by_rows(drivers: Sequence[str], analysis: RankAnalysis) -> _M
         )
         cycles = [c for c in components if len(c) > 1]
         if not cycles:
-            return nodes, edges, [root[b] if b >= 0 else -1 for b in start]
+            return nodes, sorted(edges), [root[b] if b >= 0 else -1 for b in start]
         for c in cycles:
             merged.union(*(nodes[i] for i in c))
 
@@ -660,7 +661,7 @@ def _merge_split_pairs(
 
 def _merge_cycles(
     rows: _PairRows, owner: np.ndarray, merged: UnionFind, start: np.ndarray
-) -> tuple[list[int], set[tuple[int, int]], np.ndarray, bool]:
+) -> tuple[list[int], Dependencies, np.ndarray, bool]:
     """Merge blocks that depend on each other until their dependencies form a DAG.
 
     Returns the merged blocks (each named by a member), the DAG's edges, the
@@ -677,34 +678,31 @@ def _merge_cycles(
         members = list(merged)
         root[members] = [merged[b] for b in members]
         merged_owner = np.where(owner >= 0, root[np.maximum(owner, 0)], -1).astype(np.int32)
-        sources, targets = _first_of_each(*_block_dependencies(rows, merged_owner))
+        sources, targets = _distinct_edges(*_block_dependencies(rows, merged_owner))
         nodes = np.sort(root[root >= 0])
         nodes = nodes[np.r_[True, nodes[1:] != nodes[:-1]][: len(nodes)]]
         first_link = np.full(n_blocks, len(start), dtype=np.int64)
         np.minimum.at(first_link, root[start[linked]], linked)
+        edges = Dependencies.of_arrays(sources, targets)
         if bool((first_link[sources] < first_link[targets]).all()):
-            edges = Dependencies.of(set(zip(sources.tolist(), targets.tolist(), strict=True)))
             return nodes.tolist(), edges, root, True
-        edges = set(zip(sources.tolist(), targets.tolist(), strict=True))
-        # strongly connected components of the group graph (nodes numbered in order,
-        # edges as flat arrays, in the set's order): cycles merge
-        numbered = _numbered_edges(nodes, edges)
-        components = strongly_connected(*numbered, len(nodes))
-        del numbered
+        # strongly connected components of the group graph (nodes numbered in order): cycles merge
+        components = strongly_connected(
+            np.searchsorted(nodes, sources), np.searchsorted(nodes, targets), len(nodes)
+        )
         cycles = [c for c in components if len(c) > 1]
         del components
         if not cycles:
-            return nodes.tolist(), Dependencies.of(edges), root, False
+            return nodes.tolist(), edges, root, False
         for c in cycles:
             merged.union(*(int(nodes[i]) for i in c))
 
 
 class Dependencies(Collection):
-    """Dependencies ``(source, target)`` between merged blocks, in a fixed order, held flat.
+    """Dependencies ``(source, target)`` between merged blocks, distinct and sorted, held flat.
 
-    Two arrays in the order of the set they were made from (which is the
-    order the groups' DAG lists them in): a large mechanism has about a
-    hundred thousand of them, and a set of tuples costs ten times the memory.
+    Two arrays of 4-byte numbers: a large mechanism has about a hundred
+    thousand of them, and a set of tuples costs ten times the memory.
     """
 
     __slots__ = ("sources", "targets")
@@ -713,10 +711,12 @@ class Dependencies(Collection):
         self.sources, self.targets = sources, targets
 
     @classmethod
-    def of(cls, edges: Iterable[tuple[int, int]]) -> Dependencies:
-        """The ``edges`` in their iteration order."""
-        flat = array("i", itertools.chain.from_iterable(edges))
-        return cls(flat[0::2], flat[1::2])
+    def of_arrays(cls, sources: np.ndarray, targets: np.ndarray) -> Dependencies:
+        """The edges ``(sources[k], targets[k])``, as they are (distinct and sorted)."""
+        return cls(
+            array("i", sources.astype(np.intc).tobytes()),
+            array("i", targets.astype(np.intc).tobytes()),
+        )
 
     def __iter__(self) -> Iterator[tuple[int, int]]:
         return zip(self.sources, self.targets, strict=True)
@@ -728,23 +728,11 @@ class Dependencies(Collection):
         return edge in set(self)
 
 
-def _numbered_edges(
-    nodes: np.ndarray, edges: set[tuple[int, int]]
-) -> tuple[np.ndarray, np.ndarray]:
-    """The ``edges`` between sorted ``nodes`` as two arrays of node numbers, in set order."""
-    pairs = np.array(list(edges), dtype=np.int64).reshape(-1, 2)
-    return np.searchsorted(nodes, pairs[:, 0]), np.searchsorted(nodes, pairs[:, 1])
-
-
-def _first_of_each(sources: np.ndarray, targets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The edges ``(sources[k], targets[k])`` without repeats, each where it first comes.
-
-    A set made of them is the set made of all (a repeat leaves a set as it
-    is), for less than half of the tuples.
-    """
-    key = sources.astype(np.int64) * (int(targets.max(initial=0)) + 1) + targets
-    first = np.sort(np.unique(key, return_index=True)[1])
-    return sources[first], targets[first]
+def _distinct_edges(sources: np.ndarray, targets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The edges ``(sources[k], targets[k])`` without repeats, sorted by source then target."""
+    width = int(targets.max(initial=0)) + 1
+    key = np.unique(sources.astype(np.int64) * width + targets)
+    return key // width, key % width
 
 
 def _block_dependencies(rows: _PairRows, merged_owner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -767,7 +755,7 @@ def _decomposition(
     drivers: Sequence[str],
     members: Mapping[int, list[str]],
     order: Sequence[int],
-    edges: set[tuple[int, int]],
+    edges: Collection[tuple[int, int]],
     removed_links: tuple[str, ...],
     removed_pairs: tuple[int, ...],
 ) -> Decomposition:
@@ -787,27 +775,24 @@ def _decomposition(
 def _dag_edges(
     order: Sequence[int], edges: Collection[tuple[int, int]]
 ) -> tuple[tuple[int, int], ...]:
-    """The ``edges`` between merged blocks as edges between their places in ``order``.
+    """The ``edges`` between merged blocks as edges between their places in ``order``, sorted.
 
-    Sorted by source, then as the edges come (networkx's DiGraph order); a
-    large mechanism's (a :class:`Dependencies`) renumbered by numpy.
+    A large mechanism's (a :class:`Dependencies`) renumbered and sorted by numpy.
     """
     if isinstance(edges, Dependencies) and len(edges) >= NUMPY_ROWS:
         place = np.zeros(max(order) + 1, dtype=np.int64)
         place[order] = np.arange(len(order))
         sources = place[np.frombuffer(edges.sources, dtype=np.intc)]
         targets = place[np.frombuffer(edges.targets, dtype=np.intc)]
-        by_source = np.argsort(sources, kind="stable")
-        return tuple(zip(sources[by_source].tolist(), targets[by_source].tolist(), strict=True))
+        by_place = np.lexsort((targets, sources))
+        return tuple(zip(sources[by_place].tolist(), targets[by_place].tolist(), strict=True))
     index = {b: i for i, b in enumerate(order)}
-    dag_edges = [(index[u], index[v]) for u, v in edges]
-    dag_edges.sort(key=_source)
-    return tuple(dag_edges)
+    return tuple(sorted((index[u], index[v]) for u, v in edges))
 
 
 def _topological_order(
     nodes: Sequence[int],
-    edges: set[tuple[int, int]],
+    edges: Collection[tuple[int, int]],
     key: dict[int, int],
     *,
     ascending: bool = False,
@@ -841,7 +826,6 @@ def _topological_order(
 _R = PairKind.R  # enum member lookups are slow in hot loops
 _PIN = RowKind.PIN
 
-_source = itemgetter(0)  # of an edge
 
 _GroupPairs = tuple[list[GroupPair], list[tuple[str, ...]], int]
 

@@ -182,7 +182,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--compound", type=float, default=0.2)
     parser.add_argument("--kinds", nargs="+", default=list(GROUP_KINDS), choices=list(GROUP_KINDS))
-    parser.add_argument("--rounds", type=int, default=5, help="interleaved rounds (default 5)")
+    parser.add_argument("--rounds", type=int, default=7, help="interleaved rounds (default 7)")
     parser.add_argument(
         "--budget", type=float, default=600.0, help="seconds allowed per size for the analyses"
     )

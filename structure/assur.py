@@ -760,15 +760,17 @@ def _decomposition(
     removed_pairs: tuple[int, ...],
 ) -> Decomposition:
     """The groups of the merged blocks, in ``order``, and their dependency DAG."""
-    level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}
+    links = [members[b] for b in order]
+    level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}  # each link's group
+    places = map(itertools.repeat, range(len(links)), map(len, links))  # i, len(links[i]) times
+    level.update(zip(_flat(links), _flat(places), strict=True))
     compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
-    for i, b in enumerate(order):
-        level.update(zip(members[b], itertools.repeat(i)))
     dag = _dag_edges(order, edges)
-    groups = tuple(
-        _build_group(members[b], _group_pairs(mechanism, members[b], level, i, compound))
-        for i, b in enumerate(order)
-    )
+    if len(mechanism.pairs) >= NUMPY_ROWS and len(level) == len(mechanism.links):
+        found = _all_group_pairs(mechanism, links, level, compound)
+    else:
+        found = [_group_pairs(mechanism, x, level, i, compound) for i, x in enumerate(links)]
+    groups = tuple(map(_build_group, links, found))
     return Decomposition(mechanism, tuple(drivers), groups, dag, removed_links, removed_pairs)
 
 
@@ -824,6 +826,7 @@ def _topological_order(
 
 
 _R = PairKind.R  # enum member lookups are slow in hot loops
+_flat = itertools.chain.from_iterable
 _PIN = RowKind.PIN
 
 
@@ -912,6 +915,85 @@ def _group_pairs(
                 joints.append(joint)
         read.add(link)
     return pairs, joints, n_external
+
+
+def _all_group_pairs(
+    mechanism: Mechanism,
+    groups: list[list[str]],
+    level: dict[str, int],
+    compound: dict[str, Hinge],
+) -> list[_GroupPairs]:
+    """:func:`_group_pairs` of every group (a large mechanism's), in one pass.
+
+    ``groups`` are the groups' links in solve order and ``level`` the place
+    of every link (the ground and the drivers -1). Whether a pair end gives
+    a group pair does not depend on the pairs read before it: the end of
+    group link ``x`` at a pair to link ``y`` gives an external pair when
+    ``y`` is known before ``x``'s group, an internal one when ``y`` is in the
+    group after ``x``, and the ends at compound hinges go to
+    :func:`_hinge_pairs`; numpy picks those ends out, in the order
+    :func:`_group_pairs` reads them, and only they are read in Python.
+    """
+    offsets, slot_pairs, others = mechanism.incidence()
+    sizes = np.fromiter(map(len, groups), np.int64, len(groups))
+    seq = mechanism.link_numbers(_flat(groups)).astype(np.int64)
+    group_of = np.repeat(np.arange(len(groups)), sizes)
+    place = np.arange(len(seq)) - np.repeat(np.cumsum(sizes) - sizes, sizes)  # in its group
+    link_level = np.full(len(mechanism.links), -1, dtype=np.int64)  # the ground and drivers
+    link_level[seq] = group_of
+    link_place = np.zeros(len(mechanism.links), dtype=np.int64)
+    link_place[seq] = place
+    # every pair end of every group link, in reading order: (entry of seq, slot of the index)
+    counts = (offsets[seq + 1] - offsets[seq]).astype(np.int64)
+    entry = np.repeat(np.arange(len(seq)), counts)
+    slot = np.repeat(offsets[seq] - (np.cumsum(counts) - counts), counts) + np.arange(len(entry))
+    other, pair = others[slot], slot_pairs[slot]
+    at_hinge = np.zeros(len(mechanism.pairs), dtype=bool)
+    if compound:
+        hinge_ids = [pid for h in compound.values() for pid in h.pairs]
+        at_hinge = np.isin(mechanism.pair_ids(), hinge_ids)
+    hinge = at_hinge[pair]
+    known, own = link_level[other], group_of[entry]
+    external = known < own
+    keep = hinge | external | ((known == own) & (link_place[other] > place[entry]))
+    own = own[keep]
+    ends = zip(
+        seq[entry[keep]].tolist(),
+        other[keep].tolist(),
+        pair[keep].tolist(),
+        hinge[keep].tolist(),
+        external[keep].tolist(),
+        strict=True,
+    )
+    bounds = np.searchsorted(own, np.arange(len(groups) + 1)).tolist()
+    pairs, names, ground = mechanism.pairs, mechanism.links, mechanism.ground
+    found: list[_GroupPairs] = []
+    for i in range(len(groups)):
+        group_pairs: list[GroupPair] = []
+        joints: list[tuple[str, ...]] = []
+        n_external = 0
+        seen_hinges: set[str] = set()
+        for link, other_link, k, at_pin, is_external in itertools.islice(
+            ends, bounds[i + 1] - bounds[i]
+        ):
+            p = pairs[k]
+            if at_pin:
+                if p.point not in seen_hinges:
+                    seen_hinges.add(p.point)
+                    n_external += _hinge_pairs(
+                        compound[p.point], level, i, ground, group_pairs, joints
+                    )
+            elif is_external:
+                group_pairs.append(
+                    _group_pair(p.kind, (names[link], names[other_link]), p.point, True, p.id)
+                )
+                n_external += 1
+            else:
+                joint = (names[link], names[other_link])
+                group_pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
+                joints.append(joint)
+        found.append((group_pairs, joints, n_external))
+    return found
 
 
 def _hinge_pairs(

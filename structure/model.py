@@ -828,6 +828,35 @@ class Mechanism:
         """
         return np.frombuffer(self._links.ends, dtype=np.intc).reshape(-1, 2)
 
+    def link_numbers(self, links: Iterable[str]) -> np.ndarray:
+        """The positions in :attr:`links` (the ground 0) of ``links``, as an int32 array.
+
+        >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "0", "P")])
+        >>> m.link_numbers(["2", "0"]).tolist()
+        [2, 0]
+        """
+        return np.fromiter(map(self._links.number.__getitem__, links), np.intc)
+
+    def incidence(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The pairs at each link as flat arrays: ``(offsets, pairs, others)``.
+
+        The pairs at link ``k`` (its number in :attr:`links`), in file order
+        as :meth:`pairs_of` gives them, are at ``offsets[k]:offsets[k + 1]``:
+        ``pairs`` holds each one's position in :attr:`pairs`, ``others`` the
+        number of the link at its other end.
+
+        >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "0", "P")])
+        >>> [a.tolist() for a in m.incidence()]
+        [[0, 2, 4, 6], [0, 2, 0, 1, 1, 2], [1, 2, 0, 2, 1, 0]]
+        """
+        index = self._links
+        ends = np.frombuffer(index.ends, dtype=np.intc)
+        return (
+            np.frombuffer(index.offsets, dtype=np.intc),
+            (np.argsort(ends, kind="stable") // 2).astype(np.intc),  # as the index sorted them
+            np.frombuffer(index.neighbours, dtype=np.intc),
+        )
+
     def pair_ids(self) -> np.ndarray:
         """The id of each pair, in file order, as an int32 array."""
         if not self._by_id:  # every id is its position

@@ -12,6 +12,7 @@ every group kind, with compound pins, redundant pairs and singular loops.
 from __future__ import annotations
 
 import random
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -25,6 +26,8 @@ from structure.errors import MechanismError
 from structure.generators import random_mechanism, random_mechanism_with_groups
 from structure.kinds import PairKind
 from structure.model import Mechanism
+from structure.readwrite.edgelist import read_edgelist
+from structure.report import analyze
 from structure.rigidity.constraints import RowKind, constraint_system
 from structure.rigidity.matching import Matcher, _set_keeps_order
 from structure.rigidity.rank import generic_rank
@@ -173,6 +176,50 @@ def test_numpy_group_plan_gives_the_plain_plan(index, monkeypatch):
             continue
         plans.append((plan.members, plan.order, list(plan.edges), plan.removed_links))
     assert plans[0] == plans[1]
+
+
+FIXTURES = sorted((Path(__file__).resolve().parents[2] / "fixtures").glob("*.edges"))
+
+
+def _planned(m: Mechanism):
+    """The plan of ``m`` (its higher pairs replaced) and each link's level, or None."""
+    try:
+        report = analyze(m)
+    except MechanismError:
+        return None
+    d = report.decomposition
+    plan = plan_groups(d.mechanism, d.drivers)
+    level = {plan.mechanism.ground: -1, **dict.fromkeys(plan.drivers, -1)}
+    for i, b in enumerate(plan.order):
+        level.update(dict.fromkeys(plan.members[b], i))
+    return plan, level
+
+
+@pytest.mark.parametrize(
+    "m", [*MECHANISMS, *map(read_edgelist, FIXTURES)], ids=lambda m: m.source + m.name
+)
+def test_all_group_pairs_at_once_are_the_ones_group_by_group(m):
+    planned = _planned(m)
+    if planned is None:
+        return
+    plan, level = planned
+    groups = [plan.members[b] for b in plan.order]
+    compound = dict(plan.mechanism.compound_hinges)
+    one_by_one = [
+        assur_module._group_pairs(plan.mechanism, links, level, i, compound)
+        for i, links in enumerate(groups)
+    ]
+    assert assur_module._all_group_pairs(plan.mechanism, groups, level, compound) == one_by_one
+
+
+def test_pairs_at_each_link_as_flat_arrays_are_pairs_of():
+    for m in [*MECHANISMS, *map(read_edgelist, FIXTURES)]:
+        offsets, pairs, others = m.incidence()
+        for k, link in enumerate(m.links):
+            at = slice(offsets[k], offsets[k + 1])
+            assert [m.pairs[i] for i in pairs[at]] == list(m.pairs_of(link))
+            assert [m.links[j] for j in others[at]] == [p.other(link) for p in m.pairs_of(link)]
+        assert m.link_numbers(reversed(m.links)).tolist() == list(range(len(m.links)))[::-1]
 
 
 @pytest.mark.parametrize("index", range(len(MECHANISMS)))

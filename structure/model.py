@@ -814,7 +814,7 @@ class Mechanism:
         k = index.number.get(link)
         if k is None:
             return iter(())
-        return iter(index.incident[index.offsets[k] : index.offsets[k + 1]])
+        return map(self.pairs.__getitem__, index.incident[index.offsets[k] : index.offsets[k + 1]])
 
     def pair_ends(self) -> np.ndarray:
         """The positions in :attr:`links` (the ground 0) of each pair's links ``a``, ``b``.
@@ -850,10 +850,9 @@ class Mechanism:
         [[0, 2, 4, 6], [0, 2, 0, 1, 1, 2], [1, 2, 0, 2, 1, 0]]
         """
         index = self._links
-        ends = np.frombuffer(index.ends, dtype=np.intc)
         return (
             np.frombuffer(index.offsets, dtype=np.intc),
-            (np.argsort(ends, kind="stable") // 2).astype(np.intc),  # as the index sorted them
+            np.frombuffer(index.incident, dtype=np.intc),
             np.frombuffer(index.neighbours, dtype=np.intc),
         )
 
@@ -914,17 +913,19 @@ class _LinkIndex:
 
     ``links`` are the link names, the ground first, then in order of first
     appearance; ``number`` maps a name to its position there. The pairs that
-    touch link ``k`` are ``incident[offsets[k]:offsets[k + 1]]``, in file
-    order (a pair once at each of its ends), and ``neighbours`` holds, at
-    the same places, the number of the link at the pair's other end: one
-    tuple and two arrays of 4-byte numbers instead of a tuple per link.
-    ``ends`` holds the numbers of each pair's links ``a``, ``b`` in turn.
+    touch link ``k`` are at ``offsets[k]:offsets[k + 1]``, in file order (a
+    pair once at each of its ends): ``incident`` holds their positions in
+    the mechanism's pairs and ``neighbours``, at the same places, the number
+    of the link at each one's other end. ``ends`` holds the numbers of each
+    pair's links ``a``, ``b`` in turn. Arrays of 4-byte numbers, not a tuple
+    per link (nor of records: a large mechanism's records are not all
+    touched to build it).
     """
 
     links: tuple[str, ...]
     number: dict[str, int]
     offsets: array[int]
-    incident: tuple[Pair, ...]
+    incident: array[int]
     neighbours: array[int]
     ends: array[int]
 
@@ -943,13 +944,11 @@ def _link_index(pairs: Sequence[Pair], ground: str) -> _LinkIndex:
     order = np.argsort(end_link, kind="stable")  # the ends by link, each link's in file order
     offsets = np.zeros(len(number) + 1, dtype=np.intc)
     np.cumsum(np.bincount(end_link, minlength=len(number)), out=offsets[1:])
-    records = np.empty(len(pairs), dtype=object)
-    records[:] = pairs
     return _LinkIndex(
         tuple(number),
         number,
         array("i", offsets.tobytes()),
-        tuple(records[order // 2].tolist()),
+        array("i", (order // 2).astype(np.intc).tobytes()),
         array("i", end_link[order ^ 1].tobytes()),  # the other end of the same pair
         ends,
     )
@@ -964,19 +963,19 @@ def _link_index_by_rows(
     pairs: Sequence[Pair], number: dict[str, int], ends: array[int]
 ) -> _LinkIndex:
     """:func:`_link_index` of a small mechanism, the same tables grouped in Python."""
-    incident: list[list[Pair]] = [[] for _ in number]
+    incident: list[list[int]] = [[] for _ in number]
     neighbours: list[list[int]] = [[] for _ in number]
-    for k, p in enumerate(pairs):
+    for k in range(len(pairs)):
         a, b = ends[2 * k], ends[2 * k + 1]
-        incident[a].append(p)
+        incident[a].append(k)
         neighbours[a].append(b)
-        incident[b].append(p)
+        incident[b].append(k)
         neighbours[b].append(a)
     return _LinkIndex(
         tuple(number),
         number,
         array("i", itertools.accumulate(map(len, incident), initial=0)),
-        tuple(itertools.chain.from_iterable(incident)),
+        array("i", itertools.chain.from_iterable(incident)),
         array("i", itertools.chain.from_iterable(neighbours)),
         ends,
     )

@@ -948,11 +948,7 @@ def _all_group_pairs(
     entry = np.repeat(np.arange(len(seq)), counts)
     slot = np.repeat(offsets[seq] - (np.cumsum(counts) - counts), counts) + np.arange(len(entry))
     other, pair = others[slot], slot_pairs[slot]
-    at_hinge = np.zeros(len(mechanism.pairs), dtype=bool)
-    if compound:
-        hinge_ids = [pid for h in compound.values() for pid in h.pairs]
-        at_hinge = np.isin(mechanism.pair_ids(), hinge_ids)
-    hinge = at_hinge[pair]
+    hinge = mechanism.at_compound_hinge()[pair]
     known, own = link_level[other], group_of[entry]
     external = known < own
     keep = hinge | external | ((known == own) & (link_place[other] > place[entry]))

@@ -856,6 +856,30 @@ class Mechanism:
             np.frombuffer(index.neighbours, dtype=np.intc),
         )
 
+    def pair_positions(self, pair_ids: Iterable[int]) -> np.ndarray:
+        """The positions in :attr:`pairs` of the pairs with ids ``pair_ids``, as an int64 array.
+
+        >>> m = Mechanism.from_pairs([Pair(7, PairKind.R, "0", "1"), Pair(3, PairKind.R, "1", "0")])
+        >>> m.pair_positions([3, 7]).tolist()
+        [1, 0]
+        """
+        wanted = np.fromiter(pair_ids, np.int64)
+        if not self._by_id:  # every id is its pair's position
+            return wanted - 1
+        ids = self.pair_ids()
+        by_id = np.argsort(ids, kind="stable")
+        return by_id[np.searchsorted(ids, wanted, sorter=by_id)]
+
+    def at_compound_hinge(self) -> np.ndarray:
+        """For each pair, whether it is one of the R pairs of a compound hinge (a bool array).
+
+        Found from the hinges' own lists of pairs, without a pass over the records.
+        """
+        flags = np.zeros(len(self.pairs), dtype=bool)
+        hinges = self.compound_hinges.values()
+        flags[self.pair_positions(itertools.chain.from_iterable(h.pairs for h in hinges))] = True
+        return flags
+
     def pair_ids(self) -> np.ndarray:
         """The id of each pair, in file order, as an int32 array."""
         if not self._by_id:  # every id is its position

@@ -34,7 +34,6 @@ from array import array
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
-from itertools import compress, count
 from operator import attrgetter
 
 import numpy as np
@@ -273,11 +272,9 @@ def constraint_system(mechanism: Mechanism, drivers: Sequence[str] = ()) -> Cons
     (9, 9)
     """
     links = mechanism.moving_links
-    number = {link: i for i, link in enumerate(links)}
-    number[mechanism.ground] = -1
-    pins = _compound_rows(mechanism, number, 2 * len(links))
+    pins = _compound_rows(mechanism, 2 * len(links))
     build = _system_by_numpy if len(mechanism.pairs) >= _NUMPY_PAIRS else _system_by_rows
-    system = build(mechanism, links, number, pins)
+    system = build(mechanism, links, pins)
     if not drivers:
         return system
     return system.with_rows(*zip(*(_driver_row(system, d) for d in drivers), strict=True))
@@ -298,10 +295,12 @@ def _newest_first(a: int, b: int) -> tuple[int, ...]:
 
 
 def _system_by_rows(
-    mechanism: Mechanism, links: tuple[str, ...], number: Mapping[str, int], pins: _PinRows
+    mechanism: Mechanism, links: tuple[str, ...], pins: _PinRows
 ) -> ConstraintSystem:
     """The pair rows laid out one by one (a small mechanism's)."""
     compound = mechanism.compound_hinges
+    number = {link: i for i, link in enumerate(links)}
+    number[mechanism.ground] = -1
     rows: list[tuple[int, RowKind, int, int, tuple[int, ...], str]] = []
     for position, p in enumerate(mechanism.pairs):
         key = position * _ROW_STRIDE
@@ -334,7 +333,7 @@ def _system_by_rows(
 
 
 def _system_by_numpy(
-    mechanism: Mechanism, links: tuple[str, ...], number: Mapping[str, int], pins: _PinRows
+    mechanism: Mechanism, links: tuple[str, ...], pins: _PinRows
 ) -> ConstraintSystem:
     """The pair rows laid out by numpy (a large mechanism's): one column per field."""
     rows = _pair_rows(mechanism)
@@ -398,14 +397,12 @@ def _pair_rows(mechanism: Mechanism) -> _Rows:
     group being added.
     """
     pairs = mechanism.pairs
-    compound = mechanism.compound_hinges
     n = len(pairs)
     # one pass in C per field (map, attrgetter): a large mechanism has 10^5 pairs
     kinds = np.array(list(map(attrgetter("kind"), pairs)), dtype=object)
     kind = np.where(kinds == _P, 1, np.where(kinds == _H, 2, 0)).astype(np.int8)
-    if compound:
-        at_pin = np.fromiter(map(compound.__contains__, map(attrgetter("point"), pairs)), bool, n)
-        kind[at_pin & (kind == 0)] = 3
+    if mechanism.compound_hinges:
+        kind[mechanism.at_compound_hinge()] = 3  # R pairs at a compound pin
     # the system numbers links as the mechanism does, less the ground (-1)
     ends = mechanism.pair_ends()
     hi, lo = ends.max(axis=1) - 1, ends.min(axis=1) - 1
@@ -455,45 +452,43 @@ class _PinRows:
     pins: tuple[str, ...]
 
 
-def _compound_rows(mechanism: Mechanism, number: Mapping[str, int], pins_start: int) -> _PinRows:
+def _compound_rows(mechanism: Mechanism, pins_start: int) -> _PinRows:
     """Two rows per link at each compound pin, where the pin's first R pair is.
 
     The pin is an unknown (numbered in the order of its first pair, from
-    ``pins_start`` on) unless the ground is there.
+    ``pins_start`` on) unless the ground is there. The links at each pin and
+    the first of its pairs each touches are read from the pairs' link numbers
+    (:meth:`~structure.model.Mechanism.pair_ends`), not from their records.
     """
     compound = mechanism.compound_hinges
     out = _PinRows([], [], [], [], ())
     if not compound:
         return out
+    hinges = list(compound.values())  # in the order of their first pairs
+    ids = list(itertools.chain.from_iterable(h.pairs for h in hinges))
+    positions = mechanism.pair_positions(ids)
+    ends = iter(zip(ids, mechanism.pair_ends()[positions].tolist(), strict=True))
+    first_positions = positions[np.cumsum([0] + [len(h.pairs) for h in hinges[:-1]])].tolist()
+    names = mechanism.links
     pins: list[str] = []
-    done: set[str] = set()
-    pairs, pair_of, ground = mechanism.pairs, mechanism.pair, mechanism.ground
     keys, pair_ids, adjs, links = out.key, out.pair, out.adj, out.links
-    at_pins = compress(count(), map(compound.__contains__, map(attrgetter("point"), pairs)))
-    for position in at_pins:  # the pairs at compound pins only: one pass in C finds them
-        p = pairs[position]
-        if p.kind is not _R or p.point in done:
-            continue
-        h = compound[p.point]
-        done.add(h.point)
-        first_pair: dict[str, int] = {}
-        for pid in h.pairs:
-            q = pair_of(pid)
-            first_pair.setdefault(q.a, pid)
-            first_pair.setdefault(q.b, pid)
+    for h, first_position in zip(hinges, first_positions, strict=True):
+        first_pair: dict[int, int] = {}  # each link's number (the ground 0): its first pair
+        for pid, (a, b) in itertools.islice(ends, len(h.pairs)):
+            first_pair.setdefault(a, pid)
+            first_pair.setdefault(b, pid)
         pin: tuple[int, ...] = ()
-        if ground not in h.links:
+        if 0 not in first_pair:
             pin = (pins_start + len(pins),)
             pins.append(h.point)
-        key = position * _ROW_STRIDE
-        for link in h.links:
-            if link != ground:
-                i = number[link]
+        key = first_position * _ROW_STRIDE
+        for k, pid in first_pair.items():
+            if k:  # the system numbers links as the mechanism does, less the ground
                 keys.append(key)
                 key += 1
-                pair_ids.append(first_pair[link])
-                adjs.append((*pin, 2 * i + 1, 2 * i))
-                links.append(link)
+                pair_ids.append(pid)
+                adjs.append((*pin, 2 * k - 1, 2 * k - 2))
+                links.append(names[k])
     return _PinRows(keys, pair_ids, adjs, links, tuple(pins))
 
 

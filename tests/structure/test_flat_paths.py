@@ -11,6 +11,7 @@ every group kind, with compound pins, redundant pairs and singular loops.
 
 from __future__ import annotations
 
+import dataclasses
 import random
 from pathlib import Path
 
@@ -178,6 +179,20 @@ def test_numpy_group_plan_gives_the_plain_plan(index, monkeypatch):
     assert plans[0] == plans[1]
 
 
+def _renumbered(m: Mechanism, seed: int) -> Mechanism:
+    """``m`` with its pair ids shuffled (ids that are not positions)."""
+    ids = [10 * k + 3 for k in range(len(m.pairs))]
+    random.Random(seed).shuffle(ids)
+    return Mechanism.from_pairs(
+        [dataclasses.replace(p, id=i) for p, i in zip(m.pairs, ids, strict=True)],
+        ground=m.ground,
+        drivers=m.drivers,
+    )
+
+
+RENUMBERED = [_renumbered(m, s) for s, m in enumerate(MECHANISMS[:25])]
+
+
 FIXTURES = sorted((Path(__file__).resolve().parents[2] / "fixtures").glob("*.edges"))
 
 
@@ -196,7 +211,7 @@ def _planned(m: Mechanism):
 
 
 @pytest.mark.parametrize(
-    "m", [*MECHANISMS, *map(read_edgelist, FIXTURES)], ids=lambda m: m.source + m.name
+    "m", [*MECHANISMS, *RENUMBERED, *map(read_edgelist, FIXTURES)], ids=lambda m: m.source + m.name
 )
 def test_all_group_pairs_at_once_are_the_ones_group_by_group(m):
     planned = _planned(m)
@@ -210,6 +225,43 @@ def test_all_group_pairs_at_once_are_the_ones_group_by_group(m):
         for i, links in enumerate(groups)
     ]
     assert assur_module._all_group_pairs(plan.mechanism, groups, level, compound) == one_by_one
+
+
+def _pin_rows_from_records(m: Mechanism, pins_start: int) -> tuple:
+    """The compound-pin rows read from the pair records, file order first (by hand)."""
+    number = {link: i for i, link in enumerate(m.moving_links)}
+    keys, pair_ids, adjs, links, pins, done = [], [], [], [], [], set()
+    for position, p in enumerate(m.pairs):
+        if p.kind is not PairKind.R or p.point not in m.compound_hinges or p.point in done:
+            continue
+        done.add(p.point)
+        h = m.compound_hinges[p.point]
+        pin = () if m.ground in h.links else (pins_start + len(pins),)
+        if pin:
+            pins.append(h.point)
+        for k, link in enumerate(x for x in h.links if x != m.ground):
+            keys.append(position * constraints_module._ROW_STRIDE + k)
+            pair_ids.append(next(q for q in h.pairs if link in m.pair(q).links))
+            adjs.append((*pin, 2 * number[link] + 1, 2 * number[link]))
+            links.append(link)
+    return keys, pair_ids, adjs, links, tuple(pins)
+
+
+@pytest.mark.parametrize("m", [*MECHANISMS, *RENUMBERED], ids=lambda m: m.name)
+def test_compound_pin_rows_from_link_numbers_are_the_ones_from_records(m):
+    rows = constraints_module._compound_rows(m, 2 * len(m.moving_links))
+    assert (rows.key, rows.pair, rows.adj, rows.links, rows.pins) == _pin_rows_from_records(
+        m, 2 * len(m.moving_links)
+    )
+
+
+@pytest.mark.parametrize("m", [*MECHANISMS, *RENUMBERED], ids=lambda m: m.name)
+def test_pair_positions_and_compound_flags(m):
+    ids = [p.id for p in m.pairs]
+    picked = ids[::-2]
+    assert m.pair_positions(picked).tolist() == [ids.index(i) for i in picked]
+    expected = [p.kind is PairKind.R and p.point in m.compound_hinges for p in m.pairs]
+    assert m.at_compound_hinge().tolist() == expected
 
 
 def test_pairs_at_each_link_as_flat_arrays_are_pairs_of():

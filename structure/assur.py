@@ -769,7 +769,7 @@ def _decomposition(
     if len(mechanism.pairs) >= NUMPY_ROWS and len(level) == len(mechanism.links):
         found = _all_group_pairs(mechanism, links, level, compound)
     else:
-        found = [_group_pairs(mechanism, x, level, i, compound) for i, x in enumerate(links)]
+        found = (_group_pairs(mechanism, x, level, i, compound) for i, x in enumerate(links))
     groups = tuple(map(_build_group, links, found))
     return Decomposition(mechanism, tuple(drivers), groups, dag, removed_links, removed_pairs)
 
@@ -922,8 +922,8 @@ def _all_group_pairs(
     groups: list[list[str]],
     level: dict[str, int],
     compound: dict[str, Hinge],
-) -> list[_GroupPairs]:
-    """:func:`_group_pairs` of every group (a large mechanism's), in one pass.
+) -> Iterator[_GroupPairs]:
+    """:func:`_group_pairs` of every group (a large mechanism's), a few thousand groups at a time.
 
     ``groups`` are the groups' links in solve order and ``level`` the place
     of every link (the ground and the drivers -1). Whether a pair end gives
@@ -932,64 +932,70 @@ def _all_group_pairs(
     ``y`` is known before ``x``'s group, an internal one when ``y`` is in the
     group after ``x``, and the ends at compound hinges go to
     :func:`_hinge_pairs`; numpy picks those ends out, in the order
-    :func:`_group_pairs` reads them, and only they are read in Python.
+    :func:`_group_pairs` reads them, and only they are read in Python. Each
+    group's comes as it is made: the groups are built one by one from them.
     """
     offsets, slot_pairs, others = mechanism.incidence()
+    at_hinge = mechanism.at_compound_hinge()
     sizes = np.fromiter(map(len, groups), np.int64, len(groups))
-    seq = mechanism.link_numbers(_flat(groups)).astype(np.int64)
-    group_of = np.repeat(np.arange(len(groups)), sizes)
-    place = np.arange(len(seq)) - np.repeat(np.cumsum(sizes) - sizes, sizes)  # in its group
-    link_level = np.full(len(mechanism.links), -1, dtype=np.int64)  # the ground and drivers
+    starts = np.cumsum(sizes) - sizes
+    seq = mechanism.link_numbers(_flat(groups))
+    group_of = np.repeat(np.arange(len(groups), dtype=np.intc), sizes)
+    place = (np.arange(len(seq)) - np.repeat(starts, sizes)).astype(np.intc)  # in its group
+    link_level = np.full(len(mechanism.links), -1, dtype=np.intc)  # the ground and drivers
     link_level[seq] = group_of
-    link_place = np.zeros(len(mechanism.links), dtype=np.int64)
+    link_place = np.zeros(len(mechanism.links), dtype=np.intc)
     link_place[seq] = place
-    # every pair end of every group link, in reading order: (entry of seq, slot of the index)
-    counts = (offsets[seq + 1] - offsets[seq]).astype(np.int64)
-    entry = np.repeat(np.arange(len(seq)), counts)
-    slot = np.repeat(offsets[seq] - (np.cumsum(counts) - counts), counts) + np.arange(len(entry))
-    other, pair = others[slot], slot_pairs[slot]
-    hinge = mechanism.at_compound_hinge()[pair]
-    known, own = link_level[other], group_of[entry]
-    external = known < own
-    keep = hinge | external | ((known == own) & (link_place[other] > place[entry]))
-    own = own[keep]
-    ends = zip(
-        seq[entry[keep]].tolist(),
-        other[keep].tolist(),
-        pair[keep].tolist(),
-        hinge[keep].tolist(),
-        external[keep].tolist(),
-        strict=True,
-    )
-    bounds = np.searchsorted(own, np.arange(len(groups) + 1)).tolist()
     pairs, names, ground = mechanism.pairs, mechanism.links, mechanism.ground
-    found: list[_GroupPairs] = []
-    for i in range(len(groups)):
-        group_pairs: list[GroupPair] = []
-        joints: list[tuple[str, ...]] = []
-        n_external = 0
-        seen_hinges: set[str] = set()
-        for link, other_link, k, at_pin, is_external in itertools.islice(
-            ends, bounds[i + 1] - bounds[i]
-        ):
-            p = pairs[k]
-            if at_pin:
-                if p.point not in seen_hinges:
-                    seen_hinges.add(p.point)
-                    n_external += _hinge_pairs(
-                        compound[p.point], level, i, ground, group_pairs, joints
-                    )
-            elif is_external:
-                group_pairs.append(
-                    _group_pair(p.kind, (names[link], names[other_link]), p.point, True, p.id)
-                )
-                n_external += 1
-            else:
-                joint = (names[link], names[other_link])
-                group_pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
-                joints.append(joint)
-        found.append((group_pairs, joints, n_external))
-    return found
+    for first in range(0, len(groups), _GROUP_CHUNK):  # bounded temporaries (issue 11)
+        last = min(first + _GROUP_CHUNK, len(groups))
+        entries = slice(starts[first], starts[last - 1] + sizes[last - 1])
+        links, own, at = seq[entries], group_of[entries], place[entries]
+        # every pair end of these groups' links, in reading order
+        counts = offsets[links + 1] - offsets[links]
+        reading = np.repeat(np.arange(len(links)), counts)
+        slot = np.repeat(offsets[links] - (np.cumsum(counts) - counts), counts)
+        slot += np.arange(len(slot), dtype=slot.dtype)
+        other, pair, own = others[slot], slot_pairs[slot], own[reading]
+        hinge, known = at_hinge[pair], link_level[other]
+        external = known < own
+        keep = hinge | external | ((known == own) & (link_place[other] > at[reading]))
+        ends = zip(
+            links[reading[keep]].tolist(),
+            other[keep].tolist(),
+            pair[keep].tolist(),
+            hinge[keep].tolist(),
+            external[keep].tolist(),
+            strict=True,
+        )
+        counts = np.bincount(own[keep] - first, minlength=last - first).tolist()
+        del reading, slot, other, pair, hinge, known, external, keep
+        for i, count in enumerate(counts, start=first):
+            group_pairs: list[GroupPair] = []
+            joints: list[tuple[str, ...]] = []
+            n_external = 0
+            seen_hinges: set[str] = set()
+            for link, other_link, k, at_pin, is_external in itertools.islice(ends, count):
+                p = pairs[k]
+                if at_pin:
+                    if p.point not in seen_hinges:
+                        seen_hinges.add(p.point)
+                        n_external += _hinge_pairs(
+                            compound[p.point], level, i, ground, group_pairs, joints
+                        )
+                elif is_external:
+                    link_names = (names[link], names[other_link])
+                    group_pairs.append(_group_pair(p.kind, link_names, p.point, True, p.id))
+                    n_external += 1
+                else:
+                    joint = (names[link], names[other_link])
+                    group_pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
+                    joints.append(joint)
+            yield group_pairs, joints, n_external
+
+
+#: groups whose pair ends :func:`_all_group_pairs` sorts out at a time
+_GROUP_CHUNK = 4096
 
 
 def _hinge_pairs(

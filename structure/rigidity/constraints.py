@@ -467,14 +467,15 @@ def _compound_rows(mechanism: Mechanism, pins_start: int) -> _PinRows:
     hinges = list(compound.values())  # in the order of their first pairs
     ids = list(itertools.chain.from_iterable(h.pairs for h in hinges))
     positions = mechanism.pair_positions(ids)
-    ends = iter(zip(ids, mechanism.pair_ends()[positions].tolist(), strict=True))
+    ends_at = mechanism.pair_ends()[positions]
+    ends = zip(ids, ends_at[:, 0].tolist(), ends_at[:, 1].tolist(), strict=True)
     first_positions = positions[np.cumsum([0] + [len(h.pairs) for h in hinges[:-1]])].tolist()
     names = mechanism.links
     pins: list[str] = []
     keys, pair_ids, adjs, links = out.key, out.pair, out.adj, out.links
     for h, first_position in zip(hinges, first_positions, strict=True):
         first_pair: dict[int, int] = {}  # each link's number (the ground 0): its first pair
-        for pid, (a, b) in itertools.islice(ends, len(h.pairs)):
+        for pid, a, b in itertools.islice(ends, len(h.pairs)):
             first_pair.setdefault(a, pid)
             first_pair.setdefault(b, pid)
         pin: tuple[int, ...] = ()

@@ -862,13 +862,22 @@ class Mechanism:
         >>> m = Mechanism.from_pairs([Pair(7, PairKind.R, "0", "1"), Pair(3, PairKind.R, "1", "0")])
         >>> m.pair_positions([3, 7]).tolist()
         [1, 0]
+        >>> m.pair_positions([4])
+        Traceback (most recent call last):
+        KeyError: 4
         """
         wanted = np.fromiter(pair_ids, np.int64)
         if not self._by_id:  # every id is its pair's position
-            return wanted - 1
-        ids = self.pair_ids()
-        by_id = np.argsort(ids, kind="stable")
-        return by_id[np.searchsorted(ids, wanted, sorter=by_id)]
+            positions = wanted - 1
+        else:
+            ids = self.pair_ids()
+            by_id = np.argsort(ids, kind="stable")
+            positions = by_id[np.searchsorted(ids, wanted, sorter=by_id) % len(ids)]
+        unknown = (positions < 0) | (positions >= len(self.pairs))
+        unknown[~unknown] |= self.pair_ids()[positions[~unknown]] != wanted[~unknown]
+        if unknown.any():
+            raise KeyError(int(wanted[unknown][0]))
+        return positions
 
     def at_compound_hinge(self) -> np.ndarray:
         """For each pair, whether it is one of the R pairs of a compound hinge (a bool array).

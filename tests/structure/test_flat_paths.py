@@ -263,6 +263,9 @@ def test_pair_positions_and_compound_flags(m):
     ids = [p.id for p in m.pairs]
     picked = ids[::-2]
     assert m.pair_positions(picked).tolist() == [ids.index(i) for i in picked]
+    for unknown in (max(ids) + 1, 0, -5):
+        with pytest.raises(KeyError):
+            m.pair_positions([ids[0], unknown])
     expected = [p.kind is PairKind.R and p.point in m.compound_hinges for p in m.pairs]
     assert m.at_compound_hinge().tolist() == expected
 

@@ -776,6 +776,17 @@ class Mechanism:
         reached = _reached(self._links, self._links.number[self.ground])
         return {link for link, hit in zip(self.links, reached, strict=True) if hit}
 
+    def links_off_ground(self) -> list[str]:
+        """The links that no chain of pairs joins to the ground, in order (none: connected).
+
+        >>> Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R")]).links_off_ground()
+        []
+        """
+        reached = _reached(self._links, self._links.number[self.ground])
+        if 0 not in reached:  # one pass in C
+            return []
+        return list(itertools.compress(self.links, map(operator.not_, reached)))
+
     def ground_joint(self, link: str) -> GroundJoint | None:
         """How ``link`` is jointed to the ground: an R pivot first, else a P slide, else None.
 

@@ -25,6 +25,7 @@ structure.errors.StatementError: mass and moment of inertia cannot be negative
 
 from __future__ import annotations
 
+import itertools
 import math
 import numbers
 from collections.abc import Iterable, Mapping, Sequence
@@ -397,12 +398,21 @@ def _pieces(nodes: Iterable[str], edges: Iterable[tuple[str, str]]) -> list[set[
 
 def _hinge_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
     """The pairs at one point connect all its links, and close no cycle."""
+    hinges = m.shared_hinges
+    if not hinges:
+        return
+    # the hinges' pairs' link numbers, read from the mechanism's tables, not from the records
+    ids = itertools.chain.from_iterable(h.pairs for h in hinges)
+    numbered = m.pair_ends()[m.pair_positions(ids)]
+    ends = iter(zip(numbered[:, 0].tolist(), numbered[:, 1].tolist(), strict=True))
     pair = m.pair
-    for h in m.shared_hinges:
-        ends = [(q.a, q.b) for q in map(pair, h.pairs)]
-        if len(ends) == len(h.links) - 1 and count_components(h.links, ends) == 1:
+    for h in hinges:
+        joints = list(itertools.islice(ends, len(h.pairs)))
+        links = set(itertools.chain.from_iterable(joints))
+        if len(joints) == len(links) - 1 and count_components(links, joints) == 1:
             continue  # the usual hinge: its pairs are a tree over its links
-        parts = _pieces(h.links, ends)
+        ends_named = [(q.a, q.b) for q in map(pair, h.pairs)]
+        parts = _pieces(h.links, ends_named)
         if len(parts) > 1:
             first = m.pair(h.pairs[0])
             text = " | ".join(",".join(sorted(c)) for c in parts)
@@ -423,8 +433,7 @@ def _connection_problems(m: Mechanism, ground_line: int) -> Iterable[EdgeListPro
         reason = f"the ground {m.ground} is joined to no link"
         yield EdgeListProblem(ground_line, f"ground {m.ground}", reason)
         return
-    reach = m.connected_to_ground()
-    loose = [link for link in m.links if link not in reach]
+    loose = m.links_off_ground()
     if loose:
         first = next(p for p in m.pairs if p.a in loose or p.b in loose)
         reason = f"link(s) not connected to the ground {m.ground}: {', '.join(loose)}"

@@ -26,7 +26,7 @@ from structure.assur import plan_groups
 from structure.errors import MechanismError
 from structure.generators import random_mechanism, random_mechanism_with_groups
 from structure.kinds import PairKind
-from structure.model import Mechanism
+from structure.model import Mechanism, Pair
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 from structure.rigidity.constraints import RowKind, constraint_system
@@ -332,3 +332,12 @@ def test_link_tables_grouped_by_numpy_and_by_rows_agree(index, monkeypatch):
     # each link's pairs are those that name it, in file order
     named = [[p.id for p in original.pairs if x in (p.a, p.b)] for x in original.links]
     assert [pairs for _, pairs, _ in tables[0]] == named
+
+
+def test_links_off_ground_are_the_links_connected_to_ground_leaves_out():
+    pairs = [("0", "1"), ("2", "3"), ("1", "4"), ("3", "5"), ("6", "0")]
+    loose = Mechanism(tuple(Pair(k, PairKind.R, a, b) for k, (a, b) in enumerate(pairs, start=1)))
+    for m in [loose, *MECHANISMS]:
+        reach = m.connected_to_ground()
+        assert m.links_off_ground() == [link for link in m.links if link not in reach]
+    assert loose.links_off_ground() == ["2", "3", "5"]

@@ -32,7 +32,7 @@ from __future__ import annotations
 import heapq
 import itertools
 from array import array
-from collections.abc import Collection, Iterator, Mapping, Sequence
+from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from operator import attrgetter
@@ -42,7 +42,7 @@ import numpy as np
 
 from .errors import DecompositionError, MobilityError
 from .kinds import DyadKind, PairKind
-from .model import Hinge, Mechanism
+from .model import Hinge, Mechanism, Pair
 from .rigidity.constraints import (
     ROW_CODE,
     ConstraintSystem,
@@ -888,32 +888,63 @@ def _group_pairs(
     """
     if compound is None:
         compound = mechanism.compound_hinges
-    pairs_of = mechanism.pairs_of
-    pairs: list[GroupPair] = []
-    joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
-    n_external = 0
+    ends = _group_ends(mechanism, links, done, level, compound)
+    return _pairs_of_ends(ends, done, level, mechanism.ground, compound)
+
+
+#: a pair end of a group link that gives a group pair: the link, the link at the pair's other
+#: end, the pair, whether it is at a compound hinge, whether it is external
+_End = tuple[str, str, Pair, bool, bool]
+
+
+def _group_ends(
+    mechanism: Mechanism,
+    links: list[str],
+    done: Mapping[str, int],
+    level: int,
+    compound: Mapping[str, Hinge],
+) -> Iterator[_End]:
+    """The pair ends of the group of ``links`` that give its pairs, in reading order."""
     read: set[str] = set()  # the group links whose pairs are taken
-    seen_hinges: set[str] = set()
     for link in links:
-        for p in pairs_of(link):
+        for p in mechanism.pairs_of(link):
             a = p.a
             other = p.b if link == a else a
             if compound and p.point in compound and p.kind is _R:  # (None is in no dict)
-                if p.point not in seen_hinges:
-                    seen_hinges.add(p.point)
-                    n_external += _hinge_pairs(
-                        compound[p.point], done, level, mechanism.ground, pairs, joints
-                    )
+                yield link, other, p, True, False
                 continue
             known = done[other]
             if known < level:
-                pairs.append(_group_pair(p.kind, (link, other), p.point, True, p.id))
-                n_external += 1
+                yield link, other, p, False, True
             elif known == level and other not in read:
-                joint = (link, other)
-                pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
-                joints.append(joint)
+                yield link, other, p, False, False
         read.add(link)
+
+
+def _pairs_of_ends(
+    ends: Iterable[_End],
+    done: Mapping[str, int],
+    level: int,
+    ground: str,
+    compound: Mapping[str, Hinge],
+) -> _GroupPairs:
+    """The pairs, internal joints and number of external pairs of a group from its ends."""
+    pairs: list[GroupPair] = []
+    joints: list[tuple[str, ...]] = []  # internal joints as the group links they join
+    n_external = 0
+    seen_hinges: set[str] = set()
+    for link, other, p, at_hinge, external in ends:
+        if at_hinge:
+            if p.point not in seen_hinges:
+                seen_hinges.add(p.point)
+                n_external += _hinge_pairs(compound[p.point], done, level, ground, pairs, joints)
+        elif external:
+            pairs.append(_group_pair(p.kind, (link, other), p.point, True, p.id))
+            n_external += 1
+        else:
+            joint = (link, other)
+            pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
+            joints.append(joint)
     return pairs, joints, n_external
 
 
@@ -932,7 +963,7 @@ def _all_group_pairs(
     ``y`` is known before ``x``'s group, an internal one when ``y`` is in the
     group after ``x``, and the ends at compound hinges go to
     :func:`_hinge_pairs`; numpy picks those ends out, in the order
-    :func:`_group_pairs` reads them, and only they are read in Python. Each
+    :func:`_group_ends` gives them, and only they are read in Python. Each
     group's comes as it is made: the groups are built one by one from them.
     """
     offsets, slot_pairs, others = mechanism.incidence()
@@ -961,9 +992,9 @@ def _all_group_pairs(
         external = known < own
         keep = hinge | external | ((known == own) & (link_place[other] > at[reading]))
         ends = zip(
-            links[reading[keep]].tolist(),
-            other[keep].tolist(),
-            pair[keep].tolist(),
+            map(names.__getitem__, links[reading[keep]].tolist()),
+            map(names.__getitem__, other[keep].tolist()),
+            map(pairs.__getitem__, pair[keep].tolist()),
             hinge[keep].tolist(),
             external[keep].tolist(),
             strict=True,
@@ -971,27 +1002,7 @@ def _all_group_pairs(
         counts = np.bincount(own[keep] - first, minlength=last - first).tolist()
         del reading, slot, other, pair, hinge, known, external, keep
         for i, count in enumerate(counts, start=first):
-            group_pairs: list[GroupPair] = []
-            joints: list[tuple[str, ...]] = []
-            n_external = 0
-            seen_hinges: set[str] = set()
-            for link, other_link, k, at_pin, is_external in itertools.islice(ends, count):
-                p = pairs[k]
-                if at_pin:
-                    if p.point not in seen_hinges:
-                        seen_hinges.add(p.point)
-                        n_external += _hinge_pairs(
-                            compound[p.point], level, i, ground, group_pairs, joints
-                        )
-                elif is_external:
-                    link_names = (names[link], names[other_link])
-                    group_pairs.append(_group_pair(p.kind, link_names, p.point, True, p.id))
-                    n_external += 1
-                else:
-                    joint = (names[link], names[other_link])
-                    group_pairs.append(_group_pair(p.kind, joint, p.point, False, p.id))
-                    joints.append(joint)
-            yield group_pairs, joints, n_external
+            yield _pairs_of_ends(itertools.islice(ends, count), level, i, ground, compound)
 
 
 #: groups whose pair ends :func:`_all_group_pairs` sorts out at a time

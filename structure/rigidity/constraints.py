@@ -124,26 +124,24 @@ class ConstraintSystem:
     @property
     def pos(self) -> Mapping[str, int]:
         """The position unknown of each moving link (made on first use)."""
-        found = self._indexes.get("pos")
-        if found is None:
-            found = self._indexes["pos"] = {x: 2 * i for i, x in enumerate(self.links)}
-        return found
+        return self._numbered("pos", self.links, 0, 2)
 
     @property
     def ang(self) -> Mapping[str, int]:
         """The angle unknown of each moving link (made on first use)."""
-        found = self._indexes.get("ang")
-        if found is None:
-            found = self._indexes["ang"] = {x: 2 * i + 1 for i, x in enumerate(self.links)}
-        return found
+        return self._numbered("ang", self.links, 1, 2)
 
     @property
     def pin(self) -> Mapping[str, int]:
         """The unknown of each compound pin, by its point (made on first use)."""
-        found = self._indexes.get("pin")
+        return self._numbered("pin", self.pins, 2 * len(self.links), 1)
+
+    def _numbered(self, key: str, names: Sequence[str], first: int, step: int) -> dict[str, int]:
+        """``{names[k]: first + step * k}``, kept in the indexes under ``key``."""
+        found = self._indexes.get(key)
         if found is None:
-            first = 2 * len(self.links)
-            found = self._indexes["pin"] = {p: first + k for k, p in enumerate(self.pins)}
+            numbers = range(first, first + step * len(names), step)
+            found = self._indexes[key] = dict(zip(names, numbers, strict=True))
         return found
 
     def unknown_kind(self, u: int) -> str:
@@ -464,25 +462,24 @@ def _compound_rows(mechanism: Mechanism, pins_start: int) -> _PinRows:
     out = _PinRows([], [], [], [], ())
     if not compound:
         return out
-    hinges = list(compound.values())  # in the order of their first pairs
-    ids = list(itertools.chain.from_iterable(h.pairs for h in hinges))
+    ids = list(itertools.chain.from_iterable(h.pairs for h in compound.values()))
     positions = mechanism.pair_positions(ids)
     ends_at = mechanism.pair_ends()[positions]
-    ends = zip(ids, ends_at[:, 0].tolist(), ends_at[:, 1].tolist(), strict=True)
-    first_positions = positions[np.cumsum([0] + [len(h.pairs) for h in hinges[:-1]])].tolist()
+    ends = zip(ids, positions.tolist(), ends_at[:, 0].tolist(), ends_at[:, 1].tolist(), strict=True)
     names = mechanism.links
     pins: list[str] = []
     keys, pair_ids, adjs, links = out.key, out.pair, out.adj, out.links
-    for h, first_position in zip(hinges, first_positions, strict=True):
+    for h in compound.values():  # in the order of their first pairs
+        at_pin = list(itertools.islice(ends, len(h.pairs)))
         first_pair: dict[int, int] = {}  # each link's number (the ground 0): its first pair
-        for pid, a, b in itertools.islice(ends, len(h.pairs)):
+        for pid, _, a, b in at_pin:
             first_pair.setdefault(a, pid)
             first_pair.setdefault(b, pid)
         pin: tuple[int, ...] = ()
         if 0 not in first_pair:
             pin = (pins_start + len(pins),)
             pins.append(h.point)
-        key = first_position * _ROW_STRIDE
+        key = at_pin[0][1] * _ROW_STRIDE  # where the pin's first pair is
         for k, pid in first_pair.items():
             if k:  # the system numbers links as the mechanism does, less the ground
                 keys.append(key)

@@ -159,8 +159,9 @@ class _Statements:
     points: dict[str, PointDef] = field(default_factory=dict)
     loads: list[Load] = field(default_factory=list)
     problems: list[EdgeListProblem] = field(default_factory=list)
-    #: each name of a link or point once: a link is named on ~3 lines of a large file, and
-    #: its pairs share one string (a local table, freed after the read, unlike sys.intern's)
+    #: each name of a link once: a link is named on ~3 lines of a large file, and its pairs
+    #: share one string (a local table, freed after the read, unlike sys.intern's); the
+    #: point of a plain pair line is not looked up (most points are named on one line only)
     names: dict[str, str] = field(default_factory=dict)
 
     def read_statement(self, tokens: list[str], line_no: int) -> None:
@@ -207,7 +208,7 @@ def pair_from_tokens(tokens: list[str], pair_id: int, line_no: int) -> tuple[Pai
 
 
 def _pair(tokens: list[str], pair_id: int, line_no: int, names: dict[str, str]) -> Pair:
-    """The pair of a line, its names shared through ``names`` (see :class:`_Statements`).
+    """The pair of a line, its link names shared through ``names`` (see :class:`_Statements`).
 
     The lines of nearly every large file, ``a b KIND [POINT]`` and ``a b P
     POINT angle=DEG``, are built here with :func:`make_pair`'s checks for
@@ -227,7 +228,6 @@ def _pair(tokens: list[str], pair_id: int, line_no: int, names: dict[str, str]) 
     point = tokens[3]
     if "=" in point or point == "gear":
         return _pair_with_options(tokens, pair_id, line_no, names)
-    point = names.setdefault(point, point)
     if size == 4:
         return Pair.plain(pair_id, kind, a, b, point, line_no=line_no)
     angle = _slide_angle(tokens[4]) if kind is PairKind.P else None

@@ -141,9 +141,12 @@ def test_connected_to_ground_and_the_reader_reports_loose_links() -> None:
 
 
 def test_the_reader_shares_names_and_line_numbers() -> None:
-    m = parse_edgelist(["# title", "0 1 R A", "1 2 P B angle=30", "2 0 R C", "1 3 R A", "3 0 R D"])
+    # names of two characters or more: Python shares one-character strings by itself
+    lines = ["# title", "0 L1 R PA", "L1 L2 P PB angle=30", "L2 0 R PC", "L1 L3 R PA", "L3 0 R PD"]
+    m = parse_edgelist(lines)
     first, second = m.pairs[0], m.pairs[1]
-    assert first.b is second.a  # one string for link 1
-    assert m.pairs[3].point is first.point  # and for point A
+    assert first.b is second.a and first.b is m.pairs[3].a  # one string for link L1
+    assert m.pairs[3].point == first.point  # the same point, its name read twice
+    assert [h.point for h in m.shared_hinges] == ["PA"]
     assert [(p.id, p.line_no) for p in m.pairs] == [(1, 2), (2, 3), (3, 4), (4, 5), (5, 6)]
     assert second.angle_deg == 30.0 and second.kind is PairKind.P

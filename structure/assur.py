@@ -761,14 +761,15 @@ def _decomposition(
 ) -> Decomposition:
     """The groups of the merged blocks, in ``order``, and their dependency DAG."""
     links = [members[b] for b in order]
-    level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}  # each link's group
-    places = map(itertools.repeat, range(len(links)), map(len, links))  # i, len(links[i]) times
-    level.update(zip(_flat(links), _flat(places), strict=True))
     compound = dict(mechanism.compound_hinges)  # a plain dict for the per-pair lookups
     dag = _dag_edges(order, edges)
-    if len(mechanism.pairs) >= NUMPY_ROWS and len(level) == len(mechanism.links):
-        found = _all_group_pairs(mechanism, links, level, compound)
-    else:
+    found = None
+    if len(mechanism.pairs) >= NUMPY_ROWS:
+        found = _all_group_pairs(mechanism, drivers, links, compound)
+    if found is None:
+        level = {mechanism.ground: -1, **dict.fromkeys(drivers, -1)}  # each link's group
+        places = map(itertools.repeat, range(len(links)), map(len, links))  # i, len(links[i]) times
+        level.update(zip(_flat(links), _flat(places), strict=True))
         found = (_group_pairs(mechanism, x, level, i, compound) for i, x in enumerate(links))
     groups = tuple(map(_build_group, links, found))
     return Decomposition(mechanism, tuple(drivers), groups, dag, removed_links, removed_pairs)
@@ -950,14 +951,14 @@ def _pairs_of_ends(
 
 def _all_group_pairs(
     mechanism: Mechanism,
+    drivers: Sequence[str],
     groups: list[list[str]],
-    level: dict[str, int],
     compound: dict[str, Hinge],
-) -> Iterator[_GroupPairs]:
+) -> Iterator[_GroupPairs] | None:
     """:func:`_group_pairs` of every group (a large mechanism's), a few thousand groups at a time.
 
-    ``groups`` are the groups' links in solve order and ``level`` the place
-    of every link (the ground and the drivers -1). Whether a pair end gives
+    ``groups`` are the groups' links in solve order; the ground and the
+    ``drivers`` are known before them (level -1). Whether a pair end gives
     a group pair does not depend on the pairs read before it: the end of
     group link ``x`` at a pair to link ``y`` gives an external pair when
     ``y`` is known before ``x``'s group, an internal one when ``y`` is in the
@@ -965,21 +966,37 @@ def _all_group_pairs(
     :func:`_hinge_pairs`; numpy picks those ends out, in the order
     :func:`_group_ends` gives them, and only they are read in Python. Each
     group's comes as it is made: the groups are built one by one from them.
+    The levels stay an array (no dict of every link). None when some link
+    is in no group and is neither the ground nor a driver.
     """
-    offsets, slot_pairs, others = mechanism.incidence()
-    at_hinge = mechanism.at_compound_hinge()
     sizes = np.fromiter(map(len, groups), np.int64, len(groups))
     starts = np.cumsum(sizes) - sizes
     seq = mechanism.link_numbers(_flat(groups))
     group_of = np.repeat(np.arange(len(groups), dtype=np.intc), sizes)
-    place = (np.arange(len(seq)) - np.repeat(starts, sizes)).astype(np.intc)  # in its group
-    link_level = np.full(len(mechanism.links), -1, dtype=np.intc)  # the ground and drivers
+    link_level = np.full(len(mechanism.links), -2, dtype=np.intc)
+    link_level[mechanism.link_numbers([mechanism.ground, *drivers])] = -1
     link_level[seq] = group_of
+    if (link_level == -2).any():
+        return None
+    place = (np.arange(len(seq)) - np.repeat(starts, sizes)).astype(np.intc)  # in its group
     link_place = np.zeros(len(mechanism.links), dtype=np.intc)
     link_place[seq] = place
+    arrays = (starts, sizes, seq, group_of, place, link_level, link_place)
+    return _group_pairs_by_chunk(mechanism, arrays, compound)
+
+
+def _group_pairs_by_chunk(
+    mechanism: Mechanism, arrays: tuple[np.ndarray, ...], compound: dict[str, Hinge]
+) -> Iterator[_GroupPairs]:
+    """The body of :func:`_all_group_pairs`: its groups' pairs, :data:`_GROUP_CHUNK` at a time."""
+    starts, sizes, seq, group_of, place, link_level, link_place = arrays
+    offsets, slot_pairs, others = mechanism.incidence()
+    at_hinge = mechanism.at_compound_hinge()
+    level = _LinkLevels(mechanism, link_level.tolist())
     pairs, names, ground = mechanism.pairs, mechanism.links, mechanism.ground
-    for first in range(0, len(groups), _GROUP_CHUNK):  # bounded temporaries (issue 11)
-        last = min(first + _GROUP_CHUNK, len(groups))
+    n_groups = len(sizes)
+    for first in range(0, n_groups, _GROUP_CHUNK):  # bounded temporaries (issue 11)
+        last = min(first + _GROUP_CHUNK, n_groups)
         entries = slice(starts[first], starts[last - 1] + sizes[last - 1])
         links, own, at = seq[entries], group_of[entries], place[entries]
         # every pair end of these groups' links, in reading order
@@ -1003,6 +1020,30 @@ def _all_group_pairs(
         del reading, slot, other, pair, hinge, known, external, keep
         for i, count in enumerate(counts, start=first):
             yield _pairs_of_ends(itertools.islice(ends, count), level, i, ground, compound)
+
+
+class _LinkLevels(Mapping[str, int]):
+    """Each link's level (its group's place; -1 the ground and drivers) read from a list.
+
+    What :func:`_hinge_pairs` reads as ``done`` for a large mechanism: the
+    few links at compound hinges are looked up, not a dict made of them all.
+    """
+
+    __slots__ = ("_levels", "_links", "_number")
+
+    def __init__(self, mechanism: Mechanism, levels: list[int]) -> None:
+        self._number = mechanism.link_number
+        self._levels = levels
+        self._links = mechanism.links
+
+    def __getitem__(self, link: str) -> int:
+        return self._levels[self._number(link)]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._links)
+
+    def __len__(self) -> int:
+        return len(self._links)
 
 
 #: groups whose pair ends :func:`_all_group_pairs` sorts out at a time

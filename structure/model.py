@@ -839,6 +839,15 @@ class Mechanism:
         """
         return np.frombuffer(self._links.ends, dtype=np.intc).reshape(-1, 2)
 
+    def link_number(self, link: str) -> int:
+        """The position of ``link`` in :attr:`links` (the ground 0); KeyError if it is none.
+
+        >>> m = Mechanism.from_pairs([("0", "1", "R"), ("1", "2", "R"), ("2", "0", "P")])
+        >>> m.link_number("2")
+        2
+        """
+        return self._links.number[link]
+
     def link_numbers(self, links: Iterable[str]) -> np.ndarray:
         """The positions in :attr:`links` (the ground 0) of ``links``, as an int32 array.
 

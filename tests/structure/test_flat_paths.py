@@ -226,8 +226,20 @@ def test_all_group_pairs_at_once_are_the_ones_group_by_group(m, monkeypatch):
     ]
     for chunk in (4096, 3, 1):  # groups sorted out at a time, chunk boundaries included
         monkeypatch.setattr(assur_module, "_GROUP_CHUNK", chunk)
-        at_once = list(assur_module._all_group_pairs(plan.mechanism, groups, level, compound))
-        assert at_once == one_by_one
+        found = assur_module._all_group_pairs(plan.mechanism, plan.drivers, groups, compound)
+        assert list(found) == one_by_one
+
+
+def test_group_pairs_at_once_need_every_link_placed_and_read_its_level():
+    plan, level = _planned(random_mechanism_with_groups(300, 5, compound=0.3)[0])
+    groups = [plan.members[b] for b in plan.order]
+    compound = dict(plan.mechanism.compound_hinges)
+    # a group left out: its links have no level, and the per-group path is taken
+    assert (
+        assur_module._all_group_pairs(plan.mechanism, plan.drivers, groups[:-1], compound) is None
+    )
+    levels = assur_module._LinkLevels(plan.mechanism, [level[x] for x in plan.mechanism.links])
+    assert dict(levels) == level and len(levels) == len(level)
 
 
 def _pin_rows_from_records(m: Mechanism, pins_start: int) -> tuple:

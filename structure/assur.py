@@ -974,7 +974,8 @@ def _all_group_pairs(
     seq = mechanism.link_numbers(_flat(groups))
     group_of = np.repeat(np.arange(len(groups), dtype=np.intc), sizes)
     link_level = np.full(len(mechanism.links), -2, dtype=np.intc)
-    link_level[mechanism.link_numbers([mechanism.ground, *drivers])] = -1
+    before = [x for x in (mechanism.ground, *drivers) if mechanism.has_link(x)]
+    link_level[mechanism.link_numbers(before)] = -1
     link_level[seq] = group_of
     if (link_level == -2).any():
         return None

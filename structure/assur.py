@@ -970,7 +970,6 @@ def _all_group_pairs(
     is in no group and is neither the ground nor a driver.
     """
     sizes = np.fromiter(map(len, groups), np.int64, len(groups))
-    starts = np.cumsum(sizes) - sizes
     seq = mechanism.link_numbers(_flat(groups))
     group_of = np.repeat(np.arange(len(groups), dtype=np.intc), sizes)
     link_level = np.full(len(mechanism.links), -2, dtype=np.intc)
@@ -979,18 +978,26 @@ def _all_group_pairs(
     link_level[seq] = group_of
     if (link_level == -2).any():
         return None
-    place = (np.arange(len(seq)) - np.repeat(starts, sizes)).astype(np.intc)  # in its group
-    link_place = np.zeros(len(mechanism.links), dtype=np.intc)
-    link_place[seq] = place
-    arrays = (starts, sizes, seq, group_of, place, link_level, link_place)
-    return _group_pairs_by_chunk(mechanism, arrays, compound)
+    return _group_pairs_by_chunk(mechanism, compound, sizes, seq, group_of, link_level)
 
 
 def _group_pairs_by_chunk(
-    mechanism: Mechanism, arrays: tuple[np.ndarray, ...], compound: dict[str, Hinge]
+    mechanism: Mechanism,
+    compound: dict[str, Hinge],
+    sizes: np.ndarray,
+    seq: np.ndarray,
+    group_of: np.ndarray,
+    link_level: np.ndarray,
 ) -> Iterator[_GroupPairs]:
-    """The body of :func:`_all_group_pairs`: its groups' pairs, :data:`_GROUP_CHUNK` at a time."""
-    starts, sizes, seq, group_of, place, link_level, link_place = arrays
+    """The body of :func:`_all_group_pairs`: its groups' pairs, :data:`_GROUP_CHUNK` at a time.
+
+    ``seq`` are the groups' link numbers one group after another (``sizes``
+    each), ``group_of`` the group of each, ``link_level`` every link's level.
+    """
+    starts = np.cumsum(sizes) - sizes
+    place = (np.arange(len(seq)) - np.repeat(starts, sizes)).astype(np.intc)  # in its group
+    link_place = np.zeros(len(mechanism.links), dtype=np.intc)
+    link_place[seq] = place
     offsets, slot_pairs, others = mechanism.incidence()
     at_hinge = mechanism.at_compound_hinge()
     level = _LinkLevels(mechanism, link_level.tolist())

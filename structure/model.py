@@ -887,14 +887,14 @@ class Mechanism:
         KeyError: 4
         """
         wanted = np.fromiter(pair_ids, np.int64)
+        ids = self.pair_ids()
         if not self._by_id:  # every id is its pair's position
             positions = wanted - 1
         else:
-            ids = self.pair_ids()
             by_id = np.argsort(ids, kind="stable")
             positions = by_id[np.searchsorted(ids, wanted, sorter=by_id) % len(ids)]
         unknown = (positions < 0) | (positions >= len(self.pairs))
-        unknown[~unknown] |= self.pair_ids()[positions[~unknown]] != wanted[~unknown]
+        unknown[~unknown] |= ids[positions[~unknown]] != wanted[~unknown]
         if unknown.any():
             raise KeyError(int(wanted[unknown][0]))
         return positions

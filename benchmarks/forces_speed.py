@@ -32,10 +32,10 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from kinematics.forces import forces_over
-from kinematics.plan import make_plan
-from kinematics.solve import solve_poses
-from kinematics.sweep import sweep
+from kinematics.kinetostatics.forces import forces_over
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_poses
+from kinematics.solvers.sweep import sweep
 from structure.readwrite.edgelist import parse_edgelist
 from structure.report import analyze
 

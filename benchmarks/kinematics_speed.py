@@ -69,8 +69,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from kinematics.plan import SolvePlan, make_plan  # noqa: E402
-from kinematics.sweep import sweep  # noqa: E402
+from kinematics.solvers.plan import SolvePlan, make_plan  # noqa: E402
+from kinematics.solvers.sweep import sweep  # noqa: E402
 from structure.readwrite.edgelist import read_edgelist  # noqa: E402
 from structure.report import analyze  # noqa: E402
 

@@ -26,8 +26,8 @@ from structure.deprecation import alias_moved_modules
 
 #: the public names, by the module (below this package) that defines them
 _PUBLIC_BY_MODULE = {
-    "plan": ("DriverStep", "GroupStep", "SolvePlan", "make_plan"),
-    "solve": (
+    "solvers.plan": ("DriverStep", "GroupStep", "SolvePlan", "make_plan"),
+    "solvers.solve": (
         "AssemblyError",
         "KinematicState",
         "LinkState",
@@ -37,8 +37,8 @@ _PUBLIC_BY_MODULE = {
         "solve_pose",
         "solve_poses",
     ),
-    "sweep": ("Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"),
-    "forces": (
+    "solvers.sweep": ("Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"),
+    "kinetostatics.forces": (
         "ForceSolution",
         "ForceSweep",
         "IndeterminateError",
@@ -46,10 +46,15 @@ _PUBLIC_BY_MODULE = {
         "forces_over",
         "solve_forces",
     ),
-    "exact": ("ExactForces", "ExactState", "forces_exact", "solve_exact"),
-    "inertia": ("reduced_inertia_over",),
-    "polygons": ("Term", "VectorEquation", "vector_equations"),
-    "serialization": ("exact_forces_to_dict", "exact_to_dict", "forces_to_dict", "state_to_dict"),
+    "solvers.exact": ("ExactForces", "ExactState", "forces_exact", "solve_exact"),
+    "kinetostatics.inertia": ("reduced_inertia_over",),
+    "kinetostatics.polygons": ("Term", "VectorEquation", "vector_equations"),
+    "results.serialization": (
+        "exact_forces_to_dict",
+        "exact_to_dict",
+        "forces_to_dict",
+        "state_to_dict",
+    ),
     "gears": (
         "DifferentialSplit",
         "Mesh",
@@ -70,6 +75,7 @@ _PUBLIC = {name: module for module, names in _PUBLIC_BY_MODULE.items() for name 
 
 __all__ = sorted(_PUBLIC)
 
+
 def __getattr__(name: str) -> Any:
     module = _PUBLIC.get(name)
     if module is None:
@@ -87,7 +93,7 @@ alias_moved_modules(
     {
         "kinematics.involute": "kinematics.gears.involute",
         "kinematics.differential": "kinematics.gears.differential",
-        "kinematics.report": "kinematics.serialization",
+        "kinematics.report": "kinematics.results.serialization",
         "kinematics.figure_style": "kinematics.figures.style",
         "kinematics.mechanism_figure": "kinematics.figures.mechanism",
         "kinematics.graph_figure": "kinematics.figures.graph",
@@ -95,5 +101,21 @@ alias_moved_modules(
         "kinematics.force_figures": "kinematics.figures.forces",
         "kinematics.sweep_figure": "kinematics.figures.sweep",
         "kinematics.animation": "kinematics.figures.animation",
+        "kinematics.plan": "kinematics.solvers.plan",
+        "kinematics.equations": "kinematics.solvers.equations",
+        "kinematics.planar": "kinematics.solvers.planar",
+        "kinematics.frames": "kinematics.solvers.frames",
+        "kinematics.dyads": "kinematics.solvers.dyads",
+        "kinematics.triads": "kinematics.solvers.triads",
+        "kinematics.newton": "kinematics.solvers.newton",
+        "kinematics.branches": "kinematics.solvers.branches",
+        "kinematics.solve": "kinematics.solvers.solve",
+        "kinematics.exact": "kinematics.solvers.exact",
+        "kinematics.forces": "kinematics.kinetostatics.forces",
+        "kinematics.polygons": "kinematics.kinetostatics.polygons",
+        "kinematics.inertia": "kinematics.kinetostatics.inertia",
+        "kinematics.state": "kinematics.results.state",
+        "kinematics.serialization": "kinematics.results.serialization",
+        "kinematics.export": "kinematics.results.export",
     }
 )

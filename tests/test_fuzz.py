@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from kinematics import make_plan, solve_forces, solve_pose
 from kinematics.cli.main import main
-from kinematics.serialization import forces_to_dict, state_to_dict
+from kinematics.results.serialization import forces_to_dict, state_to_dict
 from structure import analyze, parse_edgelist
 from structure.errors import MechanismError
 from structure.readwrite.jsonformat import mechanism_from_json, mechanism_to_dict

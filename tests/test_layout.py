@@ -185,3 +185,33 @@ ALLOWED_LOCAL_IMPORTS: dict[str, dict[str, str]] = {
         "DeprecationWarning (a top-level import would be a cycle: reports reads the report)",
     },
 }
+
+
+def test_public_names_are_not_shadowed_by_submodules() -> None:
+    """``kinematics.sweep`` is the function, even after its module is imported (issue 22, item 8).
+
+    Importing a submodule sets it as an attribute of its package: a public name
+    that is also a module's name would turn into the module.
+    """
+    import importlib
+    import types
+
+    import kinematics
+    import structure
+
+    roots = {"kinematics": kinematics, "structure": structure}
+    public = {
+        package: {
+            name: getattr(root, name)
+            for name in (root.__all__ if hasattr(root, "__all__") else dir(root))
+            if not name.startswith("_") and not isinstance(getattr(root, name), types.ModuleType)
+        }
+        for package, root in roots.items()
+    }
+    for module in MODULES:
+        if not module.endswith("__main__"):
+            importlib.import_module(module)
+    for package, names in public.items():
+        changed = sorted(n for n, v in names.items() if getattr(roots[package], n) is not v)
+        assert not changed, f"{package}: public names replaced by submodules: {changed}"
+    assert kinematics.sweep.__name__ == "sweep" and callable(kinematics.sweep)

@@ -26,11 +26,11 @@ from structure.errors import MechanismError
 from structure.readwrite.formats import WRITE_SUFFIXES, read_mechanism, write_mechanism
 from structure.report import analyze
 
-from ..export import write_dxf, write_parquet
-from ..plan import make_plan
-from ..serialization import check_finite
-from ..solve import solve_pose
-from ..sweep import parse_inputs, read_inputs, sweep
+from ..results.export import write_dxf, write_parquet
+from ..results.serialization import check_finite
+from ..solvers.plan import make_plan
+from ..solvers.solve import solve_pose
+from ..solvers.sweep import parse_inputs, read_inputs, sweep
 from .parser import DRAWING_SUFFIXES, SWEEP_SUFFIXES
 from .plotting import load_drawing
 

@@ -13,16 +13,16 @@ from structure.errors import MechanismError
 
 from .. import figures
 from ..figures.animation import animate, turn_inputs
-from ..plan import make_plan
-from ..solve import solve_pose
+from ..solvers.plan import make_plan
+from ..solvers.solve import solve_pose
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.report import StructuralReport
 
-    from ..forces import ForceSolution
-    from ..plan import SolvePlan
-    from ..solve import KinematicState
-    from ..sweep import Sweep
+    from ..kinetostatics.forces import ForceSolution
+    from ..solvers.plan import SolvePlan
+    from ..solvers.solve import KinematicState
+    from ..solvers.sweep import Sweep
 
 __all__ = [
     "animate",

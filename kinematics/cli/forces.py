@@ -14,19 +14,19 @@ from structure.errors import MechanismError
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
-from ..exact import forces_exact
 from ..explain.worked import explain_forces
-from ..forces import solve_forces
-from ..plan import make_plan
-from ..serialization import exact_forces_to_dict, forces_to_dict
+from ..kinetostatics.forces import solve_forces
+from ..results.serialization import exact_forces_to_dict, forces_to_dict
+from ..solvers.exact import forces_exact
+from ..solvers.plan import make_plan
 from .output import EXIT_OK, check_finite, failed, print_json, title_lines, vector, write_lines
 from .plotting import check_plot, load_drawing
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.report import StructuralReport
 
-    from ..forces import ForceSolution
-    from ..plan import SolvePlan
+    from ..kinetostatics.forces import ForceSolution
+    from ..solvers.plan import SolvePlan
 
 __all__ = ["run_forces"]
 

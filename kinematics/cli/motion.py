@@ -16,12 +16,12 @@ from structure.errors import MechanismError
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
-from ..exact import solve_exact
 from ..explain.worked import explain_kinematics
-from ..plan import make_plan
-from ..serialization import exact_to_dict, state_to_dict
-from ..solve import solve_pose
-from ..sweep import read_inputs, sweep
+from ..results.serialization import exact_to_dict, state_to_dict
+from ..solvers.exact import solve_exact
+from ..solvers.plan import make_plan
+from ..solvers.solve import solve_pose
+from ..solvers.sweep import read_inputs, sweep
 from .output import (
     EXIT_OK,
     EXIT_USAGE,
@@ -38,9 +38,9 @@ from .plotting import check_plot, load_drawing
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.report import StructuralReport
 
-    from ..plan import SolvePlan
-    from ..solve import KinematicState
-    from ..sweep import Sweep
+    from ..solvers.plan import SolvePlan
+    from ..solvers.solve import KinematicState
+    from ..solvers.sweep import Sweep
 
 __all__ = ["run_animate", "run_kinematics", "run_sweep"]
 

@@ -9,8 +9,8 @@ reaction acts, the name of a guide (``BC``, ``x``, ``(30°)``).
 >>> from structure import parse_edgelist
 >>> from structure.explain.document import Doc
 >>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_pose
+>>> from kinematics.solvers.plan import make_plan
+>>> from kinematics.solvers.solve import solve_pose
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C",
 ...                     "3 0 P C angle=0", "point A 0 0", "point B 0 0.1", "point C 0.2 0"])
 >>> plan = make_plan(analyze(m))
@@ -30,9 +30,9 @@ import numpy as np
 from structure.explain.document import Doc
 from structure.model import Mechanism, PairKind
 
-from ..plan import SolvePlan
-from ..polygons import link_rates, point_at, point_label, slide_angle, slide_direction
-from ..solve import KinematicState
+from ..kinetostatics.polygons import link_rates, point_at, point_label, slide_angle, slide_direction
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import KinematicState
 from .notation import direction_text, segment_name
 
 __all__ = [
@@ -94,7 +94,7 @@ class SolutionContext:
                 solved_in[x] = step.label
             for eq in step.equations:
                 if eq.kind == "SLIDE":
-                    slide_on[eq.pair] = eq.b  # the reaction is (eq.a, eq.b), as kinematics.forces
+                    slide_on[eq.pair] = eq.b  # the reaction is (eq.a, eq.b), as in forces
         return cls(doc, plan, state, pivot, slide, solved_in, slide_on)
 
     @property

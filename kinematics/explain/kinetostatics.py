@@ -7,14 +7,14 @@ force balance for the normal ones, then a link's balance for the inner
 reaction), then the driver's balancing moment from ``ΣM_A = 0`` and its check
 by virtual power.
 
-Every number comes from the actual solve (:func:`~kinematics.forces.solve_forces`),
+Every number comes from the actual solve (:func:`~kinematics.kinetostatics.forces.solve_forces`),
 so the explanation agrees with ``assur forces``; the steps recompute each
 unknown from its own equation, which checks the solve.
 
 >>> from structure import parse_edgelist
 >>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.forces import solve_forces
+>>> from kinematics.solvers.plan import make_plan
+>>> from kinematics.kinetostatics.forces import solve_forces
 >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0", "point B 0.1 0 on=1",
 ...                     "force 1 B 0 -100"])
 >>> r = analyze(m); plan = make_plan(r)
@@ -46,10 +46,10 @@ from structure.explain.document import (
 from structure.model import Load, PairKind
 from structure.report import StructuralReport
 
-from ..forces import ForceSolution, Reaction
-from ..plan import DriverStep, GroupStep, SolvePlan
-from ..polygons import Dyad, dyad_of, link_rates, point_at
-from ..solve import KinematicState, solve_pose
+from ..kinetostatics.forces import ForceSolution, Reaction
+from ..kinetostatics.polygons import Dyad, dyad_of, link_rates, point_at
+from ..solvers.plan import DriverStep, GroupStep, SolvePlan
+from ..solvers.solve import KinematicState, solve_pose
 from .context import NamedPoint, SolutionContext, cross, turned_left, turning_rates, vector_length
 from .notation import (
     POWER_EQUATION,
@@ -789,9 +789,9 @@ def explain_forces(
     report : StructuralReport
         The structural analysis the plan was made from.
     plan : SolvePlan
-        From :func:`kinematics.plan.make_plan`.
+        From :func:`kinematics.solvers.plan.make_plan`.
     solution : ForceSolution
-        From :func:`kinematics.forces.solve_forces`, at any pose: the motion
+        From :func:`kinematics.kinetostatics.forces.solve_forces`, at any pose: the motion
         (inertia loads, the power check) is solved at its ``inputs``.
     lang : {"en", "vi"}
         English or Vietnamese.
@@ -816,8 +816,8 @@ def explain_forces(
     --------
     >>> from structure import parse_edgelist
     >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
-    >>> from kinematics.forces import solve_forces
+    >>> from kinematics.solvers.plan import make_plan
+    >>> from kinematics.kinetostatics.forces import solve_forces
     >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0", "point B 0.1 0 on=1",
     ...                     "force 1 B 0 -100"])
     >>> r = analyze(m); plan = make_plan(r)

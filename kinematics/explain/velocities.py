@@ -9,13 +9,13 @@ moving guide the relative velocity along the guide and the Coriolis term
 (``?``), then the values the solve found. Groups that are not dyads (triads
 and higher) are solved as a whole: their equations and unknowns are listed.
 
-Every number comes from the actual solve (:func:`~kinematics.solve.solve_pose`),
+Every number comes from the actual solve (:func:`~kinematics.solvers.solve.solve_pose`),
 so the explanation agrees with ``assur kinematics``.
 
 >>> from structure import parse_edgelist
 >>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_pose
+>>> from kinematics.solvers.plan import make_plan
+>>> from kinematics.solvers.solve import solve_pose
 >>> m = parse_edgelist(["driver 1 omega=20", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 0.1", "point C 0.4 0.1", "point D 0.4 -0.3"])
 >>> r = analyze(m); plan = make_plan(r)
@@ -34,8 +34,7 @@ from structure.explain.document import Doc, Math, check_options, formula, math_j
 from structure.model import PairKind
 from structure.report import StructuralReport
 
-from ..plan import GroupStep, SolvePlan
-from ..polygons import (
+from ..kinetostatics.polygons import (
     Dyad,
     Side,
     VectorEquation,
@@ -47,7 +46,8 @@ from ..polygons import (
     slide_direction,
     vector_equations,
 )
-from ..solve import KinematicState
+from ..solvers.plan import GroupStep, SolvePlan
+from ..solvers.solve import KinematicState
 from .context import SolutionContext, turning_rates, vector_length
 from .notation import (
     ZERO,
@@ -142,7 +142,7 @@ def _vector_equation(ctx: SolutionContext, eq: VectorEquation) -> tuple[Math, li
     """The vector equation (of velocities or accelerations) and what is known of its terms.
 
     Each way to X is its known point's vector, then the terms of
-    :func:`~kinematics.polygons.vector_equations`: one known (``a^n``, ``a^k``)
+    :func:`~kinematics.kinetostatics.polygons.vector_equations`: one known (``a^n``, ``a^k``)
     for accelerations, and last the one whose size is unknown (``⊥`` the arm
     or ``∥`` the guide).
     """
@@ -450,9 +450,9 @@ def explain_kinematics(
     report : StructuralReport
         The structural analysis the plan was made from.
     plan : SolvePlan
-        From :func:`kinematics.plan.make_plan`.
+        From :func:`kinematics.solvers.plan.make_plan`.
     state : KinematicState
-        From :func:`kinematics.solve.solve_pose` (any pose).
+        From :func:`kinematics.solvers.solve.solve_pose` (any pose).
     lang : {"en", "vi"}
         English or Vietnamese.
     fmt : {"text", "markdown", "latex", "html"}
@@ -475,8 +475,8 @@ def explain_kinematics(
     --------
     >>> from structure import parse_edgelist
     >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
-    >>> from kinematics.solve import solve_pose
+    >>> from kinematics.solvers.plan import make_plan
+    >>> from kinematics.solvers.solve import solve_pose
     >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C",
     ...                     "3 0 P C angle=0", "point A 0 0", "point B 0 0.1", "point C 0.2 0"])
     >>> r = analyze(m); plan = make_plan(r)

@@ -9,7 +9,7 @@ paths of the moving points are traced faintly.
 >>> from PIL import Image
 >>> from structure import parse_edgelist
 >>> from structure.report import analyze
->>> from kinematics.plan import make_plan
+>>> from kinematics.solvers.plan import make_plan
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0.1 0", "point C 0.3 0.3", "point D 0.4 0"])
 >>> report = analyze(m)
@@ -37,9 +37,9 @@ from PIL import Image
 from structure.errors import MechanismError
 from structure.report import StructuralReport
 
-from ..plan import SolvePlan
-from ..solve import Motion, solve_poses
-from ..sweep import Sweep
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import Motion, solve_poses
+from ..solvers.sweep import Sweep
 from .scene import Scene, draw_scene
 from .style import Poses
 
@@ -54,7 +54,7 @@ def turn_inputs(plan: SolvePlan, steps: int) -> np.ndarray:
 
     >>> from structure import parse_edgelist
     >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
+    >>> from kinematics.solvers.plan import make_plan
     >>> plan = make_plan(analyze(parse_edgelist(["driver 1", "0 1 R A", "point A 0 0"])))
     >>> np.round(np.degrees(turn_inputs(plan, 4)[:, 0]), 6).tolist()
     [0.0, 90.0, 180.0, 270.0]
@@ -152,7 +152,7 @@ def animate(
     ------
     MechanismError
         An unsupported extension, an MP4 without ffmpeg, or a pose the
-        mechanism cannot take (an :class:`~kinematics.solve.AssemblyError`,
+        mechanism cannot take (an :class:`~kinematics.solvers.solve.AssemblyError`,
         or any pose but the sketch for a mechanism with higher pairs).
     ValueError
         No frames, or ``fps`` not positive.

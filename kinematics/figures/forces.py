@@ -20,9 +20,9 @@ from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from ..forces import ForceSolution
-from ..plan import SolvePlan
-from ..solve import KinematicState, solve_pose
+from ..kinetostatics.forces import ForceSolution
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import KinematicState, solve_pose
 from .style import nice_scale, place, point_xy, state_poses
 
 __all__ = ["draw_loads", "force_polygon", "polygon_entries"]
@@ -257,7 +257,7 @@ def force_polygon(
     ----------
     plan : SolvePlan
     solution : ForceSolution
-        From :func:`kinematics.forces.solve_forces` at the sketch pose (or at
+        From :func:`kinematics.kinetostatics.forces.solve_forces` at the sketch pose (or at
         the pose of ``state``).
     group_label : str, optional
         One group (``'II(2,3)'``) or driver (``'I(1)'``); all of them by default.
@@ -282,8 +282,8 @@ def force_polygon(
     --------
     >>> from structure import parse_edgelist
     >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
-    >>> from kinematics.forces import solve_forces
+    >>> from kinematics.solvers.plan import make_plan
+    >>> from kinematics.kinetostatics.forces import solve_forces
     >>> m = parse_edgelist(["driver 1 omega=1", "0 1 R A", "point A 0 0", "point B 0.1 0",
     ...                     "force 1 B 0 -100"])
     >>> plan = make_plan(analyze(m))

@@ -19,8 +19,8 @@ from matplotlib.figure import Figure
 
 from structure.report import StructuralReport
 
-from ..plan import SolvePlan
-from ..solve import KinematicState
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import KinematicState
 from .scene import draw_scene
 from .style import figure_axes, state_poses
 
@@ -40,9 +40,9 @@ def draw_mechanism(
     report : StructuralReport
         The structural analysis (groups, drivers, replacements).
     plan : SolvePlan
-        Its solve plan (:func:`kinematics.plan.make_plan`).
+        Its solve plan (:func:`kinematics.solvers.plan.make_plan`).
     state : KinematicState
-        A solved pose (:func:`kinematics.solve.solve_pose`).
+        A solved pose (:func:`kinematics.solvers.solve.solve_pose`).
     ax : Axes, optional
         Draw on these axes instead of a new figure.
 

@@ -5,7 +5,7 @@
 gid ``arrow:<name>`` (``.xyann`` the pole, ``.xy`` the tip, in drawing
 units), its lower-case label a ``Text`` with gid ``label:<name>``; the title
 states the scale, ``μ_v = 0.02 (m/s)/unit``. Each dyad's vector equations
-(:mod:`kinematics.polygons`) are drawn head to tail from the known points'
+(:mod:`kinematics.kinetostatics.polygons`) are drawn head to tail from the known points'
 images: relative velocities ``rel:v_CB``, ``rel:v_B3B2``; normal,
 tangential, Coriolis and relative accelerations ``comp:a^n_CB``,
 ``comp:a^t_CB``, ``comp:a^k_B3B2``, ``comp:a^r_B3B2`` (a zero one is a
@@ -26,9 +26,9 @@ from matplotlib.lines import Line2D
 
 from structure.model import PairKind
 
-from ..plan import SolvePlan
-from ..polygons import Term, point_motion, vector_equations
-from ..solve import KinematicState
+from ..kinetostatics.polygons import Term, point_motion, vector_equations
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import KinematicState
 from .style import figure_axes, nice_scale
 
 __all__ = ["acceleration_polygon", "velocity_polygon"]
@@ -347,7 +347,7 @@ def velocity_polygon(
     -----
     Each moving point's velocity is an arrow p→x (gid ``arrow:<name>``, label
     ``label:<name>``). For each dyad (class II group) the terms of its vector
-    equation (:mod:`kinematics.polygons`) are drawn from the known point's
+    equation (:mod:`kinematics.kinetostatics.polygons`) are drawn from the known point's
     image to X's: for an RRR dyad B–C–D the arrows b→c (``rel:v_CB``, ⊥BC) and
     d→c (``rel:v_CD``, ⊥CD); for a slider, the relative sliding velocity from
     the guide point's image (``rel:v_B3B2``, ∥ the guide). The point of a

@@ -36,7 +36,7 @@ from matplotlib.patches import Arc, Circle, FancyArrowPatch, Polygon
 from structure.model import Pair, PairKind
 from structure.report import StructuralReport
 
-from ..plan import SolvePlan
+from ..solvers.plan import SolvePlan
 from .style import (
     DRIVER_COLOUR,
     OTHER_COLOUR,

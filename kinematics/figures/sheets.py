@@ -21,8 +21,8 @@ This module puts them together on sheets (:func:`kinematics_sheet`,
 
 >>> from structure import parse_edgelist
 >>> from structure.report import analyze
->>> from kinematics.plan import make_plan
->>> from kinematics.solve import solve_pose
+>>> from kinematics.solvers.plan import make_plan
+>>> from kinematics.solvers.solve import solve_pose
 >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
 ...                     "point A 0 0", "point B 0 1", "point C 2 1", "point D 2 0"])
 >>> report = analyze(m)
@@ -49,9 +49,9 @@ from matplotlib.figure import Figure
 
 from structure.report import StructuralReport
 
-from ..forces import ForceSolution
-from ..plan import SolvePlan
-from ..solve import KinematicState, solve_pose
+from ..kinetostatics.forces import ForceSolution
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import KinematicState, solve_pose
 from .forces import draw_loads, force_polygon, polygon_entries
 from .graph import draw_graph
 from .mechanism import draw_mechanism
@@ -144,7 +144,7 @@ def forces_sheet(
     report : StructuralReport
     plan : SolvePlan
     solution : ForceSolution
-        From :func:`kinematics.forces.solve_forces` at the pose of ``state``.
+        From :func:`kinematics.kinetostatics.forces.solve_forces` at the pose of ``state``.
     state : KinematicState, optional
         The pose (default: the sketch's).
 

@@ -27,7 +27,7 @@ from matplotlib.lines import Line2D
 
 from structure.report import StructuralReport
 
-from ..solve import KinematicState
+from ..solvers.solve import KinematicState
 
 __all__ = [
     "DRIVER_COLOUR",

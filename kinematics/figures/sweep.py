@@ -13,8 +13,8 @@ from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from ..plan import SolvePlan
-from ..sweep import Sweep
+from ..solvers.plan import SolvePlan
+from ..solvers.sweep import Sweep
 
 __all__ = ["sweep_figure"]
 
@@ -40,7 +40,7 @@ def sweep_figure(result: Sweep, plan: SolvePlan | None = None) -> Figure:
     Parameters
     ----------
     result : Sweep
-        From :func:`kinematics.sweep.sweep`.
+        From :func:`kinematics.solvers.sweep.sweep`.
     plan : SolvePlan, optional
         Names the driver and tells a rotation from a slide.
 
@@ -52,8 +52,8 @@ def sweep_figure(result: Sweep, plan: SolvePlan | None = None) -> Figure:
     --------
     >>> from structure import parse_edgelist
     >>> from structure.report import analyze
-    >>> from kinematics.plan import make_plan
-    >>> from kinematics.sweep import sweep
+    >>> from kinematics.solvers.plan import make_plan
+    >>> from kinematics.solvers.sweep import sweep
     >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
     ...                     "point A 0 0", "point B 0.1 0", "point C 0.3 0.3", "point D 0.4 0"])
     >>> fig = sweep_figure(sweep(make_plan(analyze(m)), steps=12))

@@ -24,7 +24,7 @@ from structure.model import Pair, PairKind
 from structure.report import StructuralReport
 
 from ..figures.style import OTHER_COLOUR, palette, virtual_links
-from ..plan import SolvePlan
+from ..solvers.plan import SolvePlan
 from .cycle import Cycle, inputs_text
 from .markup import element, json_script
 from .phrases import say

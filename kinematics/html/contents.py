@@ -4,8 +4,8 @@
 the kinematics and forces at the sketch pose, the cycle and the gear train.
 The numbers the page shows are the very dicts the command line prints with
 ``--json`` (:func:`structure.report.report_to_dict`,
-:func:`kinematics.serialization.state_to_dict`,
-:func:`kinematics.serialization.forces_to_dict`), so the two agree by
+:func:`kinematics.results.serialization.state_to_dict`,
+:func:`kinematics.results.serialization.forces_to_dict`), so the two agree by
 construction. A part that does not apply is a :class:`Note` instead: no
 coordinates, no loads, no gears, or the error that stopped it.
 
@@ -26,11 +26,11 @@ from structure.model import Mechanism
 from structure.readwrite.reports import report_to_dict
 from structure.report import StructuralReport, analyze
 
-from ..forces import ForceSolution, solve_forces
-from ..plan import SolvePlan, make_plan
-from ..serialization import forces_to_dict, state_to_dict
-from ..solve import solve_pose
-from ..state import KinematicState
+from ..kinetostatics.forces import ForceSolution, solve_forces
+from ..results.serialization import forces_to_dict, state_to_dict
+from ..results.state import KinematicState
+from ..solvers.plan import SolvePlan, make_plan
+from ..solvers.solve import solve_pose
 from .cycle import Cycle, solve_cycle
 from .gearing import TrainSummary, train_summary
 from .markup import note

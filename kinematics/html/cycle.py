@@ -26,9 +26,9 @@ import numpy as np
 
 from ..errors import AssemblyError, SingularPoseError
 from ..figures.animation import turn_inputs
-from ..plan import SolvePlan
-from ..solve import solve_poses
-from ..sweep import Sweep, sweep
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import solve_poses
+from ..solvers.sweep import Sweep, sweep
 
 __all__ = ["Cycle", "inputs_text", "solve_cycle"]
 
@@ -37,7 +37,7 @@ __all__ = ["Cycle", "inputs_text", "solve_cycle"]
 class Cycle:
     """The poses of a report's cycle.
 
-    ``sweep`` holds the kinematics of every pose (:func:`kinematics.sweep.sweep`),
+    ``sweep`` holds the kinematics of every pose (:func:`kinematics.solvers.sweep.sweep`),
     ``poses[link]`` each link's pose ``(x, y, θ)`` (shape (poses, 3)); ``sketch``
     is the index of the sketch's pose; ``complete`` is true for a whole turn (the
     poses loop), false for a stretch, which ``stop`` (the error at its end) explains.

@@ -12,8 +12,8 @@ import math
 import numpy as np
 import pytest
 
-from kinematics.plan import make_plan
-from kinematics.solve import solve_pose
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_pose
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 

@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 import sympy
 
-from kinematics.exact import forces_exact
-from kinematics.forces import solve_forces
-from kinematics.plan import make_plan
+from kinematics.kinetostatics.forces import solve_forces
+from kinematics.solvers.exact import forces_exact
+from kinematics.solvers.plan import make_plan
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 import sympy
 
-from kinematics.exact import solve_exact
-from kinematics.plan import make_plan
+from kinematics.solvers.exact import solve_exact
+from kinematics.solvers.plan import make_plan
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
@@ -62,7 +62,7 @@ def sketch_fixtures():
 
 @pytest.mark.parametrize("name", sketch_fixtures())
 def test_exact_and_numeric_solvers_agree_at_the_sketch(name):
-    from kinematics.solve import solve_pose
+    from kinematics.solvers.solve import solve_pose
 
     plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
     numeric = solve_pose(plan)

@@ -16,10 +16,10 @@ import pytest
 
 from kinematics.cli.main import main
 from kinematics.explain.worked import angle_of, explain_forces, explain_kinematics
-from kinematics.forces import solve_forces
-from kinematics.plan import make_plan
-from kinematics.polygons import vector_equations
-from kinematics.solve import solve_pose
+from kinematics.kinetostatics.forces import solve_forces
+from kinematics.kinetostatics.polygons import vector_equations
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_pose
 from structure.explain.mathml import MATHML_NAMESPACE
 from structure.explain.structural import explain_structure
 from structure.expressions import read_number

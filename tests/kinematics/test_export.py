@@ -1,4 +1,4 @@
-"""Tests of the exports (kinematics.export): DXF read back with ezdxf, Parquet with pyarrow.
+"""Tests of the exports (kinematics.results.export): DXF read back with ezdxf, Parquet with pyarrow.
 
 The DXF's entities are on their group's layers and sit where the solved pose
 puts the points; the Parquet table holds the same numbers as the CSV.
@@ -14,10 +14,16 @@ from collections import Counter
 import numpy as np
 import pytest
 
-from kinematics.export import GROUND_LAYER, LABEL_LAYER, dxf_layers, write_dxf, write_parquet
-from kinematics.plan import make_plan
-from kinematics.solve import solve_pose
-from kinematics.sweep import sweep
+from kinematics.results.export import (
+    GROUND_LAYER,
+    LABEL_LAYER,
+    dxf_layers,
+    write_dxf,
+    write_parquet,
+)
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_pose
+from kinematics.solvers.sweep import sweep
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 

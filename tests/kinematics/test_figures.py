@@ -32,10 +32,10 @@ from kinematics.figures.sheets import (
     sweep_figure,
     velocity_polygon,
 )
-from kinematics.forces import solve_forces
-from kinematics.plan import make_plan
-from kinematics.solve import solve_pose
-from kinematics.sweep import sweep
+from kinematics.kinetostatics.forces import solve_forces
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_pose
+from kinematics.solvers.sweep import sweep
 from structure.errors import MechanismError
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze

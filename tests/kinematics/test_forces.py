@@ -12,10 +12,10 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from kinematics.cli.main import main
-from kinematics.forces import IndeterminateError, forces_over, solve_forces
-from kinematics.plan import make_plan
-from kinematics.serialization import forces_to_dict
-from kinematics.solve import SingularPoseError, solve_pose, solve_poses
+from kinematics.kinetostatics.forces import IndeterminateError, forces_over, solve_forces
+from kinematics.results.serialization import forces_to_dict
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import SingularPoseError, solve_pose, solve_poses
 from structure.generators import random_mechanism
 from structure.model import Load, PointDef
 from structure.readwrite.edgelist import parse_edgelist, write_edgelist
@@ -302,8 +302,8 @@ def test_closed_form_reactions_agree_with_the_dense_solve(name, monkeypatch):
     motion = solve_poses(plan, inputs)
     closed = forces_over(plan, motion)
     assert closed.power_residual.max() < 1e-9
-    monkeypatch.setattr("kinematics.forces._closed_dyad", lambda *args: None)
-    monkeypatch.setattr("kinematics.forces._crank_balance", lambda *args: None)
+    monkeypatch.setattr("kinematics.kinetostatics.forces._closed_dyad", lambda *args: None)
+    monkeypatch.setattr("kinematics.kinetostatics.forces._crank_balance", lambda *args: None)
     dense = forces_over(plan, motion)
     assert closed.order == dense.order
     for ours, theirs in zip(closed.reactions, dense.reactions, strict=True):

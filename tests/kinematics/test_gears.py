@@ -19,8 +19,8 @@ from kinematics.gears.trains import (
     train_forces,
     train_losses,
 )
-from kinematics.plan import make_plan
-from kinematics.solve import solve_pose
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_pose
 from structure.errors import MobilityError
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze

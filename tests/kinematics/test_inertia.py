@@ -6,9 +6,9 @@ import math
 
 import numpy as np
 
-from kinematics.inertia import reduced_inertia_over
-from kinematics.plan import make_plan
-from kinematics.solve import solve_poses
+from kinematics.kinetostatics.inertia import reduced_inertia_over
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_poses
 from structure.readwrite.edgelist import parse_edgelist
 from structure.report import analyze
 

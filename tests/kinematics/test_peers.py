@@ -23,8 +23,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from kinematics.plan import make_plan
-from kinematics.solve import solve_poses
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_poses
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 

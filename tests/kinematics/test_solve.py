@@ -7,9 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from kinematics.equations import group_residual, group_system
-from kinematics.plan import make_plan
-from kinematics.solve import AssemblyError, SingularPoseError, solve_pose, solve_poses
+from kinematics.solvers.equations import group_residual, group_system
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import AssemblyError, SingularPoseError, solve_pose, solve_poses
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 from structure.rigidity.constraints import sketch_problems
@@ -244,7 +244,7 @@ point D 0.4 0
 
 @pytest.mark.parametrize("name", fixtures_with_sketch())
 def test_closed_form_dyads_agree_with_newton(name, monkeypatch):
-    import kinematics.solve as solve_module
+    import kinematics.solvers.solve as solve_module
 
     plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
     inputs = np.array([[0.1] * len(plan.drivers), [-0.1] * len(plan.drivers)])
@@ -252,8 +252,8 @@ def test_closed_form_dyads_agree_with_newton(name, monkeypatch):
         closed = solve_module.solve_poses(plan, inputs)
     except AssemblyError:
         pytest.skip("this linkage does not reach ±0.1 rad from its sketch")
-    monkeypatch.setattr("kinematics.dyads.place_dyad", lambda *args: False)
-    monkeypatch.setattr("kinematics.dyads.frame_dyad", lambda *args: False)
+    monkeypatch.setattr("kinematics.solvers.dyads.place_dyad", lambda *args: False)
+    monkeypatch.setattr("kinematics.solvers.dyads.frame_dyad", lambda *args: False)
     newton = solve_module.solve_poses(plan, inputs)
     for link in closed.q:
         np.testing.assert_allclose(closed.q[link], newton.q[link], atol=1e-10)
@@ -265,14 +265,14 @@ def test_closed_form_dyads_agree_with_newton(name, monkeypatch):
 def test_frames_over_a_whole_turn_agree_with_newton_and_the_jacobian(name, monkeypatch):
     # The closed-form dyads keep each link as a frame (pins, lazy angle); the
     # general path solves the same groups by Newton and J·q̇ = −J_k·q̇_k.
-    import kinematics.solve as solve_module
+    import kinematics.solvers.solve as solve_module
 
     plan = make_plan(analyze(read_edgelist(FIXTURES / name)))
     inputs = np.linspace(0.0, 2 * math.pi, 73)[:, None]
     closed = solve_module.solve_poses(plan, inputs)
     drivers = {d.link for d in plan.drivers}
     assert set(closed.frames) > drivers  # the dyads were solved in closed form
-    monkeypatch.setattr("kinematics.dyads.frame_dyad", lambda *args: False)
+    monkeypatch.setattr("kinematics.solvers.dyads.frame_dyad", lambda *args: False)
     newton = solve_module.solve_poses(plan, inputs)
     assert set(newton.frames) <= drivers
     for link in newton.q:

@@ -13,9 +13,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from kinematics.cli.main import main
-from kinematics.plan import make_plan
-from kinematics.solve import AssemblyError
-from kinematics.sweep import parse_inputs, sweep
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import AssemblyError
+from kinematics.solvers.sweep import parse_inputs, sweep
 from structure.errors import EdgeListError
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
@@ -331,7 +331,7 @@ def test_sweep_points_share_one_block_and_ground_points_are_constants():
 
 
 def test_link_angles_and_transmission_are_computed_when_first_read(monkeypatch):
-    import kinematics.sweep as sweep_module
+    import kinematics.solvers.sweep as sweep_module
 
     calls = []
     real = sweep_module._angles

@@ -13,9 +13,9 @@ import math
 import numpy as np
 import pytest
 
-from kinematics import triads
-from kinematics.plan import make_plan
-from kinematics.solve import SingularPoseError, solve_pose, solve_poses
+from kinematics.solvers import triads
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import SingularPoseError, solve_pose, solve_poses
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 

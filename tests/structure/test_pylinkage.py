@@ -14,8 +14,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from kinematics.plan import make_plan
-from kinematics.solve import solve_pose
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import solve_pose
 from structure.errors import EdgeListError
 from structure.readwrite.formats import read_mechanism
 from structure.readwrite.jsonformat import mechanism_to_json

@@ -16,8 +16,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from kinematics.plan import make_plan
-from kinematics.solve import SingularPoseError, solve_pose
+from kinematics.solvers.plan import make_plan
+from kinematics.solvers.solve import SingularPoseError, solve_pose
 from structure.errors import EdgeListError
 from structure.model import PairKind
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist

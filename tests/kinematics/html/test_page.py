@@ -20,7 +20,7 @@ from kinematics.html.cycle import solve_cycle
 from kinematics.html.markup import format_number
 from kinematics.html.phrases import PHRASES
 from kinematics.html.svg import figure_svg
-from kinematics.plan import make_plan
+from kinematics.solvers.plan import make_plan
 from structure.meshes import meshes
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze

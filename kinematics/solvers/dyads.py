@@ -8,7 +8,7 @@ for a prismatic pair, a common point for a revolute pair):
   slide's line. :func:`frame_dyad` finds the pins' positions, velocities and
   accelerations at once from the vector equations of the textbook, by
   Cramer's rule, and keeps each link's motion as a
-  :class:`~kinematics.frames.Frame` (no ``arctan2``):
+  :class:`~kinematics.solvers.frames.Frame` (no ``arctan2``):
   ``v_C = v_B + ω1·J·BC = v_D + ω2·J·DC`` and
   ``a_C = a_B + ε1·J·BC − ω1²·BC = a_D + ε2·J·DC − ω2²·DC`` (RRR);
   ``v_C = v_K + ṡ·u = v_B + ω1·J·BC`` and
@@ -16,7 +16,7 @@ for a prismatic pair, a common point for a revolute pair):
   the guide's point under C and the Coriolis term ``2·ω_g·ṡ·J·u``).
 * RPR: a circle in the slide offset; PRP and RPP: a 2×2 linear system.
   :func:`place_dyad` finds the links' poses ``(x, y, θ)``; their rates come
-  from the group's Jacobian (:mod:`kinematics.solve`).
+  from the group's Jacobian (:mod:`kinematics.solvers.solve`).
 
 The root taken is the one of the sketch (or the other, for a group in
 ``plan.flip``). A dyad that does not close at some input raises
@@ -45,7 +45,7 @@ import numpy as np
 from structure.assur import GroupPair
 from structure.model import PairKind
 
-from .errors import DEAD_CENTRE, AssemblyError, SingularPoseError
+from ..errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
@@ -220,7 +220,7 @@ def _watch_dips(solve: _FrameSolve, h2) -> None:
     minimum of the samples, a parabola through it and its neighbours gives the
     low point between them; when that is no higher than the rise over one
     step, the two steps beside it are appended to ``solve.watch`` for the
-    solve to look into with finer steps (:mod:`kinematics.branches`).
+    solve to look into with finer steps (:mod:`kinematics.solvers.branches`).
     """
     if solve.watch is None or not isinstance(h2, np.ndarray) or len(h2) < 3:
         return

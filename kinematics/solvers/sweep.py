@@ -28,13 +28,13 @@ import numpy as np
 
 from structure.errors import EdgeListError, EdgeListProblem
 
+from ..errors import SweepSizeError
+from ..kinetostatics.forces import forces_over
+from ..results.state import Motion
 from .dyads import PointLayout, laid_out
-from .errors import SweepSizeError
-from .forces import forces_over
 from .plan import SolvePlan
 from .planar import cross, norm, rotate_many, units
 from .solve import solve_poses
-from .state import Motion
 
 __all__ = [
     "BYTES_PER_POSE_ITEM",

@@ -39,12 +39,12 @@ import numpy as np
 from structure.errors import MechanismError
 from structure.model import Load, Mechanism, PairKind
 
-from .equations import Equation, equation_point, evaluate, slide_equations
-from .errors import IndeterminateError
-from .plan import DriverStep, GroupStep, SolvePlan
-from .planar import cross, norm, perpendicular, rotate_many, unit, unit_from_degrees
-from .solve import solve_poses
-from .state import Motion
+from ..errors import IndeterminateError
+from ..results.state import Motion
+from ..solvers.equations import Equation, equation_point, evaluate, slide_equations
+from ..solvers.plan import DriverStep, GroupStep, SolvePlan
+from ..solvers.planar import cross, norm, perpendicular, rotate_many, unit, unit_from_degrees
+from ..solvers.solve import solve_poses
 
 # IndeterminateError is defined in kinematics.errors; it stays importable from here
 __all__ = [

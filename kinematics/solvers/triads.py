@@ -2,7 +2,7 @@
 
 A class III triad is a ternary base link whose three pins P₁, P₂, P₃ each
 carry a binary lead, the lead's other pin E₁, E₂, E₃ on a known link. The
-general Newton (:mod:`kinematics.newton`) solves its twelve equations; with
+general Newton (:mod:`kinematics.solvers.newton`) solves its twelve equations; with
 every pair a revolute one unknown is enough. Turned by φ, the base's pin P₁
 lies on the circle of radius l₁ about E₁ and on the circle of radius l₂
 about C₂ = E₂ − R(φ)·d₁₂ (d₁ⱼ = Pⱼ − P₁ on the sketch), so it is a
@@ -19,7 +19,7 @@ vectorised Newton starting from the coarse roots interpolated along the path
 (:func:`triad_angles`). The pins' velocities and accelerations follow from
 one 3×3 system per pose, ``uᵢ·(v_Pᵢ − v_Eᵢ) = 0`` (uᵢ = Pᵢ − Eᵢ) and its
 derivative, in closed form (:func:`pin_rates`). Each link's motion is kept as
-a :class:`~kinematics.frames.Frame`.
+a :class:`~kinematics.solvers.frames.Frame`.
 
 Where this does not apply, :func:`frame_triad` returns None and the general
 Newton solves the group as before: a group that is not an RRR triad, inputs
@@ -421,7 +421,7 @@ def pin_rates(
     keeps its length); ``(a_P₁, ε)`` the same rows, right-hand sides
     ``uᵢ·a_Eᵢ + ω²·uᵢ·R·d₁ᵢ − |v_Pᵢ − v_Eᵢ|²``: Cramer's rule, the adjugate
     shared. P₂ and P₃ then move as points of the base with P₁ (the
-    arithmetic of the base's :class:`~kinematics.frames.Frame`). Each pin's
+    arithmetic of the base's :class:`~kinematics.solvers.frames.Frame`). Each pin's
     ``(vx, vy, ax, ay)`` is written into its entry of ``out`` (four arrays;
     fresh ones where it is None). Returns ``(ω, ε, velocities,
     accelerations, measure)``, the pins' rates as ``(x, y)`` pairs and
@@ -443,8 +443,7 @@ def pin_rates(
     # every pin's four arrays (fresh where ``out`` has none), the accelerations' ones
     # holding the right-hand sides until the accelerations are written
     (v1x, v1y, a1x, a1y), (v2x, v2y, a2x, a2y), (v3x, v3y, a3x, a3y) = (
-        pin if pin is not None else tuple(np.empty(scratch.shape) for _ in range(4))
-        for pin in out
+        pin if pin is not None else tuple(np.empty(scratch.shape) for _ in range(4)) for pin in out
     )
     rhs = [
         _dot(u, e[2], e[3], scratch, spare)
@@ -597,7 +596,7 @@ def _outer_position(frames: dict[str, Frame], tables: tuple, pins: dict, lead: L
 def _outer_pin(
     frames: dict[str, Frame], tables: tuple, pins: dict, lead: Lead, rates: bool, inputs
 ) -> tuple:
-    """``(x, y, vx, vy, ax, ay)`` of a lead's outer pin (:func:`~kinematics.dyads.known_pin`).
+    """``(x, y, vx, vy, ax, ay)`` of a lead's outer pin (:func:`~.dyads.known_pin`).
 
     Written into its row of a sweep's layout when the layout names it under
     the known link or the lead; without ``rates`` only ``(x, y)``.

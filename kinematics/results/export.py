@@ -17,9 +17,9 @@ colour each group:
 
 Coordinates are the pose's, in the units of the sketch (metres).
 
-:func:`write_parquet` writes a :class:`~kinematics.sweep.Sweep` as a Parquet
+:func:`write_parquet` writes a :class:`~kinematics.solvers.sweep.Sweep` as a Parquet
 table (pyarrow, the ``parquet`` extra) with the columns of
-:meth:`~kinematics.sweep.Sweep.as_dict`, as :meth:`~kinematics.sweep.Sweep.to_csv`
+:meth:`~kinematics.solvers.sweep.Sweep.as_dict`, as :meth:`~kinematics.solvers.sweep.Sweep.to_csv`
 writes them to CSV.
 
 This module draws without matplotlib: the figures of :mod:`kinematics.figures`
@@ -41,9 +41,9 @@ from structure.errors import MechanismError
 from structure.model import Pair, PairKind
 from structure.report import StructuralReport
 
-from .plan import SolvePlan
-from .solve import KinematicState
-from .sweep import Sweep
+from ..solvers.plan import SolvePlan
+from ..solvers.solve import KinematicState
+from ..solvers.sweep import Sweep
 
 try:  # the ``dxf`` extra
     import ezdxf

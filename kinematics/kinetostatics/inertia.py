@@ -24,8 +24,8 @@ import numpy as np
 
 from structure.errors import MechanismError, MobilityError
 
-from .plan import SolvePlan
-from .state import Motion
+from ..results.state import Motion
+from ..solvers.plan import SolvePlan
 
 __all__ = ["reduced_inertia_over"]
 

@@ -22,8 +22,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .frames import Frame
-from .planar import perpendicular, rotate_many, vectors
+from ..solvers.frames import Frame
+from ..solvers.planar import perpendicular, rotate_many, vectors
 
 __all__ = ["KinematicState", "LinkState", "Motion", "PointState"]
 
@@ -33,7 +33,7 @@ class Motion:
     """Arrays over poses: ``q``, ``qd``, ``qdd`` per link (shape (N, 3)), and the inputs.
 
     ``frames`` holds the links solved in closed form as
-    :class:`~kinematics.frames.Frame` s; their ``q`` (which needs the angle's
+    :class:`~kinematics.solvers.frames.Frame` s; their ``q`` (which needs the angle's
     ``arctan2``) is computed the first time it is read, and :meth:`point`
     uses the frame directly. ``pins`` holds the points the solve found on
     the way from a link's frame, ``(link, x, y) -> (x, y, vx, vy, ax, ay)``,

@@ -7,7 +7,7 @@ next. Between two poses far apart the linkage may go through a change point
 links in line) or over a stretch where it cannot be assembled at all, and the
 fixed sign then lands in the other mode without a word. The dyads note the
 steps where their joint moves as far as the other mode lies
-(:func:`kinematics.dyads.frame_dyad`); :func:`confirm_branches` looks into
+(:func:`kinematics.solvers.dyads.frame_dyad`); :func:`confirm_branches` looks into
 each such step with finer steps, until it is clear (the same mode all along)
 or the change point is found, where it raises :class:`BranchChangeError`.
 
@@ -30,8 +30,8 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ..errors import AssemblyError, BranchChangeError, SingularPoseError, inputs_text
 from .dyads import NOT_CLOSED
-from .errors import AssemblyError, BranchChangeError, SingularPoseError, inputs_text
 from .plan import SolvePlan
 
 __all__ = [

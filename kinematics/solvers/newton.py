@@ -1,6 +1,6 @@
 """Groups without a closed form, by Newton's method, followed pose by pose from the sketch.
 
-A group's pair equations (:func:`~kinematics.equations.group_system`) are
+A group's pair equations (:func:`~kinematics.solvers.equations.group_system`) are
 solved for its links' poses: on one pose by damped Newton steps
 (:func:`newton_pose`), over many poses by :func:`follow`, which starts each
 chunk of poses from a quadratic extrapolation of the last solutions and runs
@@ -29,8 +29,8 @@ import math
 
 import numpy as np
 
+from ..errors import AssemblyError
 from .equations import Equation, group_residual, group_system
-from .errors import AssemblyError
 from .plan import GroupStep, SolvePlan
 
 __all__ = [

@@ -28,9 +28,9 @@ import sympy
 from structure.expressions import exact_float, exact_value
 from structure.model import Load, Mechanism
 
+from ..errors import IndeterminateError
+from ..kinetostatics.forces import ground_equations
 from .equations import Equation, equation_point
-from .errors import IndeterminateError
-from .forces import ground_equations
 from .plan import DriverStep, GroupStep, SolvePlan
 
 __all__ = ["ExactForces", "ExactState", "forces_exact", "solve_exact"]
@@ -82,12 +82,12 @@ def _unit(degrees: float | None) -> sympy.Matrix:
 
 
 def _perp(v: sympy.Matrix) -> sympy.Matrix:
-    """``J·v`` for an exact vector (what :func:`kinematics.planar.perpendicular` does to arrays)."""
+    """``J·v`` for an exact vector (what :func:`~.planar.perpendicular` does to arrays)."""
     return sympy.Matrix([-v[1], v[0]])
 
 
 def _cross(a: sympy.Matrix, b: sympy.Matrix) -> sympy.Expr:
-    """``a × b`` (z) for exact vectors (what :func:`kinematics.planar.cross` does to arrays)."""
+    """``a × b`` (z) for exact vectors (what :func:`~.planar.cross` does to arrays)."""
     return a[0] * b[1] - a[1] * b[0]
 
 
@@ -262,7 +262,9 @@ def _exact_reactions(rows, lam: sympy.Matrix) -> list:
 
 
 def forces_exact(plan: SolvePlan) -> ExactForces:
-    """Exact reactions and balancing moment at the sketch pose (see :mod:`kinematics.forces`).
+    """Exact reactions and balancing moment at the sketch pose.
+
+    See :mod:`kinematics.kinetostatics.forces`.
 
     >>> from structure import analyze, parse_edgelist
     >>> from kinematics import make_plan

@@ -22,8 +22,8 @@ from typing import TYPE_CHECKING, Any
 from structure.validation import check_finite
 
 if TYPE_CHECKING:  # annotations only: importing the exact solver would import sympy
-    from .exact import ExactForces, ExactState
-    from .forces import ForceSolution
+    from ..kinetostatics.forces import ForceSolution
+    from ..solvers.exact import ExactForces, ExactState
     from .state import KinematicState
 
 __all__ = [

@@ -2,15 +2,15 @@
 
 Each link's state is ``(x, y, θ)``: the displacement and rotation of its frame
 from the sketch pose (where every link is at ``(0, 0, 0)``); the results are
-the types of :mod:`kinematics.state`. For every pose the drivers are placed
+the types of :mod:`kinematics.results.state`. For every pose the drivers are placed
 from their input; then each Assur group, in solve order, is
 
 * positioned: dyads in closed form, vectorised over all poses, with the
-  sketch's assembly mode (the sign of the square root; :mod:`kinematics.dyads`),
+  sketch's assembly mode (the sign of the square root; :mod:`kinematics.solvers.dyads`),
   class III triads of revolute pairs through one unknown, their base link's
-  angle, with their rates in closed form (:mod:`kinematics.triads`), other
+  angle, with their rates in closed form (:mod:`kinematics.solvers.triads`), other
   groups by Newton's method on their own equations, following the inputs from
-  the sketch (:mod:`kinematics.newton`);
+  the sketch (:mod:`kinematics.solvers.newton`);
 * given its velocities from ``J_g·q̇_g = −J_k·q̇_k`` (``k``: the known links its
   external pairs touch) and its accelerations from
   ``J_g·q̈_g = −J_k·q̈_k − (dJ/dt)·q̇``, as batched linear solves (RRR and RRP
@@ -39,9 +39,10 @@ import numpy as np
 
 from structure.errors import MechanismError
 
+from ..errors import DEAD_CENTRE, AssemblyError, SingularPoseError
+from ..results.state import KinematicState, LinkState, Motion, PointState
 from . import branches, dyads, triads
 from .equations import group_system
-from .errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import Frame, LinkTable
 from .newton import (
     CONTINUATION_STEP,
@@ -52,9 +53,8 @@ from .newton import (
     scaled_jacobian,
 )
 from .plan import GroupStep, SolvePlan
-from .state import KinematicState, LinkState, Motion, PointState
 
-# the errors and the state types are defined in kinematics.errors and kinematics.state;
+# the errors and the state types are defined in kinematics.errors and kinematics.results.state;
 # they stay importable from here
 __all__ = [
     "AssemblyError",
@@ -110,7 +110,7 @@ def solve_poses(
 
     Consecutive rows are a path: a dyad whose joint jumps between two rows as
     far as its other assembly mode lies is followed with finer steps
-    (:mod:`kinematics.branches`), so that it never changes mode unnoticed.
+    (:mod:`kinematics.solvers.branches`), so that it never changes mode unnoticed.
 
     Raises
     ------
@@ -159,7 +159,7 @@ def _checked(
     """:func:`_solve_poses` over a path of inputs, with no silent change of assembly mode.
 
     The steps the closed-form dyads watch are looked into with finer steps
-    (:func:`kinematics.branches.confirm_branches`); a path with steps coarser
+    (:func:`kinematics.solvers.branches.confirm_branches`); a path with steps coarser
     than the continuation step is first checked on intermediate poses, positions
     only. A single pose keeps the sketch's mode without a path to check.
     """
@@ -281,7 +281,7 @@ def _rates(step: GroupStep, plan: SolvePlan, tables: tuple, inputs: np.ndarray) 
 
     ``J_g·q̇_g = −J_k·q̇_k`` and ``J_g·q̈_g = −J_k·q̈_k − (dJ/dt)·q̇``, as batched
     linear solves (least squares for a redundant link's consistent rows, in the
-    sketch's unit of length, :func:`~kinematics.newton.scaled_jacobian`, so that
+    sketch's unit of length, :func:`~kinematics.solvers.newton.scaled_jacobian`, so that
     the answer does not depend on the unit). The dead-centre test is on that
     scaled Jacobian too.
 

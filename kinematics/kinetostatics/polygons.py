@@ -42,9 +42,9 @@ import numpy as np
 from structure.assur import AssurGroup, GroupPair
 from structure.model import PairKind
 
-from .plan import SolvePlan
-from .planar import cross, norm, perpendicular, rotate, unit
-from .state import KinematicState
+from ..results.state import KinematicState
+from ..solvers.plan import SolvePlan
+from ..solvers.planar import cross, norm, perpendicular, rotate, unit
 
 __all__ = [
     "Chain",
@@ -361,7 +361,7 @@ def vector_equations(
     Parameters
     ----------
     plan : SolvePlan
-        From :func:`kinematics.plan.make_plan`.
+        From :func:`kinematics.solvers.plan.make_plan`.
     state : KinematicState
         A solved pose of ``plan``.
     order : {1, 2}

@@ -44,7 +44,7 @@ from structure.model import Mechanism
 
 from .planar import dot, perpendicular, rotate, rotate_many
 
-# rotate and rotate_many live in kinematics.planar; they stay importable from here
+# rotate and rotate_many live in kinematics.solvers.planar; they stay importable from here
 __all__ = [
     "Equation",
     "equation_point",

@@ -31,6 +31,9 @@ try:
 except ImportError:  # the tests say so and skip (or fail under ASSUR_REQUIRE_BROWSER)
     sync_playwright = None
 
+#: a browser start and a page per fixture: left out of the default run, run by CI (-m slow)
+pytestmark = pytest.mark.slow
+
 #: set (to anything but 0) where the browser tests must run: a missing browser fails them
 REQUIRED = os.environ.get("ASSUR_REQUIRE_BROWSER", "0") not in ("", "0")
 _CANDIDATES = ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable")

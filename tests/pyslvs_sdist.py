@@ -11,10 +11,12 @@ read with :mod:`ast`: only literal nodes are evaluated, nothing is executed.
 from __future__ import annotations
 
 import ast
+import hashlib
+import json
 import os
-import subprocess
 import sys
 import tarfile
+import urllib.request
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -36,8 +38,10 @@ EXAMPLES_MEMBER = f"pyslvs-{PYSLVS_VERSION}/pyslvs/example.py"
 TESTS_MEMBER = f"pyslvs-{PYSLVS_VERSION}/test/test_core.py"
 #: the name of the example dictionary in pyslvs/example.py
 EXAMPLES_NAME = "_example_list"
-#: building pyslvs's metadata installs setuptools in a fresh environment: minutes
-DOWNLOAD_TIMEOUT = 900
+#: the sdist's sha256, as the package index lists it
+SDIST_SHA256 = "0e92a67683f3627322be07f37e57d2ded2edd4dcf6773d52bcbe6e45948a5275"
+#: seconds for the download (the file is about 1 MB)
+DOWNLOAD_TIMEOUT = 300
 ROOT = Path(__file__).resolve().parent.parent
 
 
@@ -76,7 +80,11 @@ def sdist_dir() -> Path:
 
 
 def download_sdist(directory: Path) -> tuple[Path | None, str]:
-    """The sdist in ``directory``, downloaded with pip when it is not there.
+    """The sdist in ``directory``, downloaded from the package index when it is not there.
+
+    The file is fetched as it is (nothing is built: ``pip download --no-binary`` would build
+    Cython to read pyslvs's metadata), checked against :data:`SDIST_SHA256` and renamed into
+    place only when whole.
 
     Returns
     -------
@@ -86,22 +94,34 @@ def download_sdist(directory: Path) -> tuple[Path | None, str]:
     path = directory / SDIST_NAME
     if path.is_file():
         return path, ""
-    command = [sys.executable, "-m", "pip", "download", "--no-deps", "--no-binary", ":all:"]
-    command += [f"pyslvs=={PYSLVS_VERSION}", "-d", str(directory)]
     try:
-        done = subprocess.run(
-            command, capture_output=True, text=True, timeout=DOWNLOAD_TIMEOUT, check=False
-        )
-    except subprocess.TimeoutExpired:
-        return None, f"pip download took more than {DOWNLOAD_TIMEOUT} s"
-    except OSError as exc:
-        return None, f"pip download could not run: {exc}"
-    if path.is_file():
-        return path, ""
-    said = [line.strip() for line in done.stderr.splitlines() if line.strip()]
-    errors = [line for line in said if line.startswith("ERROR")]
-    why = errors[0] if errors else said[-1] if said else "no message"
-    return None, f"pip download failed (exit {done.returncode}): {why}"
+        url = _sdist_url()
+        with urllib.request.urlopen(url, timeout=DOWNLOAD_TIMEOUT) as response:
+            data = response.read()
+    except (OSError, ValueError, KeyError) as exc:  # URLError is an OSError
+        return None, f"the download of {SDIST_NAME} failed: {exc}"
+    digest = hashlib.sha256(data).hexdigest()
+    if digest != SDIST_SHA256:
+        return None, f"{SDIST_NAME} from {url} has sha256 {digest}, not {SDIST_SHA256}"
+    directory.mkdir(parents=True, exist_ok=True)
+    partial = directory / f".{SDIST_NAME}.{os.getpid()}.part"
+    partial.write_bytes(data)
+    partial.replace(path)
+    return path, ""
+
+
+def _sdist_url() -> str:
+    """The sdist's address, from the simple index's JSON page (PEP 691)."""
+    index = os.environ.get("PIP_INDEX_URL", "https://pypi.org/simple").rstrip("/")
+    request = urllib.request.Request(
+        f"{index}/pyslvs/", headers={"Accept": "application/vnd.pypi.simple.v1+json"}
+    )
+    with urllib.request.urlopen(request, timeout=60) as response:
+        page = json.load(response)
+    for entry in page["files"]:
+        if entry["filename"] == SDIST_NAME:
+            return entry["url"]
+    raise ValueError(f"the index {index} lists no {SDIST_NAME}")
 
 
 def read_sdist(path: Path) -> PyslvsSdist:
@@ -182,3 +202,9 @@ def _asserted(statement: ast.stmt) -> dict[str, float]:
         return {second.id: float(ast.literal_eval(first))}
     except (TypeError, ValueError):  # not a literal number
         return {}
+
+
+if __name__ == "__main__":  # .ci/run: fetch the sdist before the tests
+    found, why = download_sdist(sdist_dir())
+    print(why or f"pyslvs sdist: {found}", file=sys.stderr if why else sys.stdout)
+    sys.exit(1 if why else 0)

@@ -59,7 +59,7 @@ def _add_explain(command: argparse.ArgumentParser) -> None:
         choices=FORMATS,
         metavar="FORMAT",
         help="print the worked solution, step by step as the textbook writes it: "
-        "text (default), markdown or latex",
+        "text (default), markdown, latex or html (formulas in MathML)",
     )
     command.add_argument(
         "--lang", choices=LANGUAGES, default="en", help="language of --explain (default en)"
@@ -189,8 +189,9 @@ def _sweep_arguments(command: argparse.ArgumentParser) -> None:
     command.add_argument("--csv", metavar="OUT", help="write every pose to this CSV file")
     _add_inputs(
         command,
-        "the poses to solve instead of one turn: a line per pose, a column per driver "
-        "(degrees, or metres for a sliding driver); a first line 'drivers 4 1' sets the order",
+        "the poses to solve instead of one turn: a line per pose, a column per driver, each "
+        "the driver's rotation from the sketch in degrees (its displacement from the sketch in "
+        "metres for a sliding driver); a first line 'drivers 4 1' sets the column order",
     )
     _add_plot(command, "plot paths, ω, ε, |v|, |a|, transmission angle, balancing")
 

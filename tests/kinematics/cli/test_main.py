@@ -10,6 +10,7 @@ import pytest
 
 from kinematics.cli.main import RUNNERS
 from kinematics.cli.parser import COMMANDS
+from structure.explain.document import FORMATS
 
 from .conftest import ROOT, fixture, run
 
@@ -36,6 +37,22 @@ def test_help_exits_0(capsys):
     code, out, _ = run(capsys, "classify", "--help")
     assert code == 0
     assert "--all-drivers" in out
+
+
+@pytest.mark.parametrize("command", ["classify", "kinematics", "forces"])
+def test_help_names_every_explain_format(capsys, command):
+    code, out, _ = run(capsys, command, "--help")
+    assert code == 0
+    said = " ".join(out.split())
+    assert all(f in said for f in FORMATS), FORMATS
+
+
+@pytest.mark.parametrize("command", ["sweep", "animate", "convert"])
+def test_help_says_inputs_are_taken_from_the_sketch(capsys, command):
+    code, out, _ = run(capsys, command, "--help")
+    said = " ".join(out.split())
+    assert code == 0
+    assert "from the sketch" in said or "as for 'assur sweep --inputs'" in said
 
 
 # ------------------------------------------------------------------ as a program

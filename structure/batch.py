@@ -1,7 +1,8 @@
 """Classify many mechanisms: files, directories, globs, JSON lines; one row each.
 
 :func:`batch_items` turns what a user names into items in a fixed order: a file,
-every ``.edges`` and ``.json`` file under a directory (sorted), the files a glob
+every ``.edges``, ``.json`` and ``.pyslvs`` file under a directory and its subdirectories
+(sorted), the files a glob
 matches (sorted), or ``-`` for JSON lines on standard input (one mechanism per
 line: the JSON form, or an atlas row). The text of each file is read here, so the
 items can travel to another process or machine. :func:`classify_item` gives the
@@ -35,7 +36,9 @@ from .errors import EdgeListError, EdgeListProblem, MechanismError, MobilityErro
 from .model import Mechanism
 from .parallel import ordered_map
 from .readwrite.edgelist import parse_edgelist
-from .readwrite.jsonformat import mechanism_from_dict, mechanism_from_json
+from .readwrite.formats import parse_mechanism
+from .readwrite.jsonformat import mechanism_from_dict
+from .readwrite.pyslvs import looks_like_expression
 from .readwrite.reports import mobility_error_dict
 from .readwrite.table import Column
 from .readwrite.textfile import read_text
@@ -51,14 +54,15 @@ __all__ = [
 ]
 
 #: suffixes a directory is searched for
-MECHANISM_SUFFIXES = (".edges", ".json")
+MECHANISM_SUFFIXES = (".edges", ".json", ".pyslvs")
 
 
 @dataclass(frozen=True, slots=True)
 class BatchItem:
     """One mechanism to classify: where it came from, its text and its form.
 
-    ``form`` is ``"edges"`` (edge list), ``"json"`` (a JSON file) or ``"line"`` (a
+    ``form`` is ``"edges"`` (edge list, or a pyslvs expression), ``"json"`` (ours or
+    pylinkage's), ``"pyslvs"`` (a project or expression) or ``"line"`` (a
     JSON line); ``problem`` is set instead of ``text`` when it could not be read.
     """
 
@@ -69,7 +73,8 @@ class BatchItem:
 
 
 def _file_item(path: str) -> BatchItem:
-    form = "json" if Path(path).suffix.lower() == ".json" else "edges"
+    suffix = Path(path).suffix.lower()
+    form = suffix[1:] if suffix in (".json", ".pyslvs") else "edges"
     try:
         text = read_text(path)
     except EdgeListError as error:
@@ -118,9 +123,11 @@ def batch_items(inputs: Sequence[str], stdin: IO[str] | None = None) -> Iterator
 
 
 def _mechanism(item: BatchItem) -> Mechanism:
-    if item.form == "json":
-        return mechanism_from_json(item.text, source=item.source)
+    if item.form in ("json", "pyslvs"):  # ours or pylinkage's JSON; a pyslvs project
+        return parse_mechanism(item.text, f".{item.form}", item.source)
     if item.form == "edges":
+        if looks_like_expression(item.text):
+            return parse_mechanism(item.text, ".edges", item.source)
         with paused_gc():
             return parse_edgelist(io.StringIO(item.text), source=item.source)
     try:

@@ -164,4 +164,15 @@ def test_parquet_table(tmp_path, capsys):
     assert main(["classify", str(FIXTURES), "--format", "parquet", "-o", str(out)]) == 0
     table = pq.read_table(out)
     assert table.column_names == [name for name, _ in BATCH_COLUMNS]
-    assert table.num_rows == len(list(FIXTURES.glob("*.edges")))
+    mechanisms = [p for p in FIXTURES.rglob("*") if p.suffix in (".edges", ".json", ".pyslvs")]
+    assert table.num_rows == len(mechanisms)
+
+
+def test_a_directory_reads_every_format_by_its_reader():
+    """pylinkage's JSON and a pyslvs expression in a folder are read by their own readers."""
+    rows = list(classify_batch(batch_items([str(FIXTURES / "exchange")])))
+    assert [(Path(r["source"]).name, r["W"], r["error"]) for r in rows] == [
+        ("crank_slider_pylinkage.json", 1, None),
+        ("jansen.pyslvs", 1, None),
+    ]
+    assert rows[1]["formula"] == "I(L1) → II(L2,L4) → II(L3,L5) → II(L6,L7)"

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from structure.errors import MechanismError
 from structure.expressions import exact_float, exact_value
 from structure.model import Load, Mechanism
 
@@ -276,11 +277,18 @@ def forces_exact(plan: SolvePlan) -> ExactForces:
     Raises
     ------
     MechanismError
-        A redundant link: the reactions are indeterminate.
+        A redundant link: the reactions are indeterminate; or a pair with
+        friction, which the exact solution does not take.
     """
     if any(s.group is None for s in plan.steps):
         raise IndeterminateError("the mechanism is over-constrained: reactions are indeterminate")
     m = plan.mechanism
+    rough = [p.label for p in m.pairs if p.friction or p.circle]
+    if rough:
+        raise MechanismError(
+            f"the exact reactions leave friction out, and pair(s) {', '.join(rough)} have it "
+            "(friction= or circle=): drop --exact for the reactions with friction"
+        )
     kin = solve_exact(plan)
     loads = _exact_loads(plan, kin)
     carried: dict[str, sympy.Matrix] = {}

@@ -549,6 +549,11 @@ def _radial_layout(
     arm: dict[str, float] = {}
     place: dict[int, float] = {}  # x of each mesh
     for mesh in ratios.meshes:
+        if is_planet(mechanism, mesh.a, carrier) and is_planet(mechanism, mesh.b, carrier):
+            raise MechanismError(
+                f"the planet force balance does not cover the mesh {mesh.pair.label} between "
+                "two planets"
+            )
         planet = planets[mesh.pair.id] = _planet_of(mechanism, mesh, carrier)
         za, zb, module = teeth[mesh.pair.id]
         z_planet, z_central = (za, zb) if mesh.a == planet else (zb, za)

@@ -311,3 +311,32 @@ def test_a_differential_has_an_inertia_matrix():
     m = parse_edgelist([*lines, "mass 4 0 0.5 O", "mass c 0 0.1 O"])
     matrix = inertia_matrix(m, speed_ratios(m))
     assert matrix.tolist() == [[sympy.Rational(21, 10), -1], [-1, sympy.Rational(1, 2)]]
+
+
+def test_losses_through_three_meshes_with_two_planets_in_a_row():
+    # sun 1 (z = 20) – planet 2 (10) – planet 3 (10) – fixed ring (50), carrier c. Willis:
+    # ω3 − ωc = −5ωc, ω2 − ωc = 5ωc, ω1 − ωc = −2.5ωc, so ω1 = 1 gives ωc = −2/3. The load
+    # −5 N·m on c drives (power 10/3): lossless the sun brakes with −10/3 N·m. In the carrier's
+    # frame the ring (relative speed 2/3) gives power to the sun (5/3) through three meshes:
+    # −T1·5/3 = η³·T0·2/3 with T0 = 5 − T1 (moments about the axis balance), so
+    # T1 = −5η³/(2.5 − η³).
+    text = """
+driver 1
+0 1 R O
+0 c R O
+c 2 R P
+c 3 R Q
+1 2 H gear z=20,10 module=0.001
+2 3 H gear z=10,10 module=0.001
+3 0 H gear z=10,50 internal=0 module=0.001
+moment c -5
+"""
+    m = parse_edgelist(text.strip().splitlines())
+    ratios = speed_ratios(m)
+    assert balancing_moment(m, ratios) == sympy.Rational(-10, 3)
+    eta = 0.95
+    losses = train_losses(m, ratios, eta)
+    assert losses.balancing_moment == pytest.approx(-5 * eta**3 / (2.5 - eta**3), rel=1e-12)
+    # the planets' force balance does not cover a mesh between two planets: refused, not guessed
+    with pytest.raises(MechanismError, match="between two planets"):
+        train_forces(m, ratios)

@@ -340,3 +340,20 @@ moment c -5
     # the planets' force balance does not cover a mesh between two planets: refused, not guessed
     with pytest.raises(MechanismError, match="between two planets"):
         train_forces(m, ratios)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.lists(st.integers(12, 80), min_size=2, max_size=5), st.floats(0.8, 1.0))
+def test_an_ordinary_train_passes_eta_to_the_power_of_its_meshes(teeth, eta):
+    # gears on fixed axes in a row, the last one loaded against its motion: the power goes
+    # through every mesh once, so the input gives P/η^(meshes), P the load's (lossless) power
+    lines = chain(teeth).splitlines()
+    last = str(len(teeth))
+    m = parse_edgelist(lines)
+    ratio = speed_ratios(m).ratios[last]  # ω_last/ω_1
+    m = parse_edgelist([*lines, f"moment {last} {-1.0 if ratio > 0 else 1.0}"])
+    ratios = speed_ratios(m)
+    lossless = float(balancing_moment(m, ratios))  # = |ratio| > 0: the input drives
+    losses = train_losses(m, ratios, eta)
+    assert losses.balancing_moment == pytest.approx(lossless / eta ** (len(teeth) - 1), rel=1e-9)
+    assert losses.efficiency == pytest.approx(eta ** (len(teeth) - 1), rel=1e-9)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from structure.errors import DecompositionError, MobilityError
@@ -287,3 +289,30 @@ def test_every_driver_choice_of_a_toggle_sketch_is_listed():
     # dropped there as "already fixed"
     report = analyze(mech(TOGGLE.format(driver="1")))
     assert [c.drivers for c in all_driver_choices(report)] == [("1",), ("3",)]
+
+
+def test_a_cam_roller_drawn_at_a_dead_point_keeps_its_passive_roller():
+    # the cam fixture's disc (centre C1) and roller (axis R0, contact K on C1–R0) with the arm
+    # Q–R0 drawn in line with C1–R0 (all at 60° from C1): once replaced, the dyad (v1, 2) has
+    # its links in line, a dead point; the roller's spin is still the one passive freedom
+    # (W = 3·3 − (2·3 + 1) − 1 = 1)
+    c1x, c1y, c, s = 0.017320508, 0.01, 0.5, math.sqrt(3) / 2
+    point = {
+        "K": (c1x + 0.05 * c, c1y + 0.05 * s),
+        "R0": (c1x + 0.065 * c, c1y + 0.065 * s),
+        "Q": (c1x + 0.165 * c, c1y + 0.165 * s),
+    }
+    text = """
+driver 1 omega=10
+0 1 R O
+0 2 R Q
+2 3 R R0
+1 3 H K roller=3 centers=C1,R0
+point O 0 0
+point C1 0.017320508 0.01
+"""
+    lines = [*text.strip().splitlines(), *(f"point {k} {x!r} {y!r}" for k, (x, y) in point.items())]
+    report = analyze(parse_edgelist(lines))
+    assert [(p.link, p.source) for p in report.mobility.passive] == [("3", "roller")]
+    assert _counts(report) == (1, 0, 1, "I(1) → II(2,v1)")
+    assert [report.groups[k].label for k in report.singular] == ["II(2,v1)"]

@@ -52,7 +52,8 @@ from .rigidity.constraints import (
     sketch_realization,
 )
 from .rigidity.matching import NUMPY_ROWS, Assignment, block_arrays, strongly_connected
-from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, geometric_rank
+from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank
+from .rigidity.regularity import regular_rank
 from .utils import UnionFind, count_components, slot_setters
 from .validation import validated
 
@@ -235,14 +236,17 @@ def driver_candidates(mechanism: Mechanism) -> tuple[str, ...]:
 
 
 def _geometric_analysis(mechanism: Mechanism, drivers: Sequence[str]) -> RankAnalysis | None:
-    """The sketch's rank when coordinates are complete (and the system small enough)."""
+    """The sketch's rank when coordinates are complete (and the system small enough).
+
+    At a singular sketch (a dead point), the rank of a regular pose near it.
+    """
     if not mechanism.points:
         return None
     system = constraint_system(mechanism, drivers)
     if system.n_scalar_unknowns > DENSE_LIMIT:
         return None
     try:
-        return geometric_rank(system, sketch_realization(system))
+        return regular_rank(system, sketch_realization(system))[0]
     except MissingGeometry:
         return None
 

@@ -37,15 +37,8 @@ from .rigidity.constraints import (
     constraint_system,
     sketch_realization,
 )
-from .rigidity.rank import (
-    DENSE_LIMIT,
-    RankAnalysis,
-    dimensionless_jacobian,
-    generic_rank,
-    geometric_rank,
-    null_space,
-)
-from .rigidity.regularity import nearby_pose
+from .rigidity.rank import DENSE_LIMIT, RankAnalysis, generic_rank, null_space
+from .rigidity.regularity import regular_rank
 
 __all__ = [
     "Mobility",
@@ -210,9 +203,9 @@ def rank_analyses(
 
 
 _SINGULAR_SKETCH = (
-    "the sketch is a singular pose (the pairs' Jacobian loses rank there, as for "
-    "a linkage drawn folded flat): the geometric counts are those of a regular "
-    "pose reached from it by a small motion"
+    "the sketch is a singular pose (the Jacobian of the pairs and drivers loses rank there: "
+    "a dead point, or a linkage drawn folded flat): the geometric counts are those of a "
+    "regular pose reached from it by a small motion"
 )
 
 
@@ -246,17 +239,14 @@ def _rank_analyses(
     realization, notes = _sketch_pose(system)
     if realization is None:
         return _RankAnalyses(system, generic, None, None, None, {}, notes)
-    jacobian = dimensionless_jacobian(system, realization)[0]
-    geometric = geometric_rank(system, realization, jacobian=jacobian)
+    # at a singular sketch (a dead point, a linkage drawn folded flat) the rank drops: the
+    # counts are then those of a regular pose near it, never the sketch's accident
+    geometric, realization, jacobian = regular_rank(
+        system, realization, baseline=generic.n_dependent
+    )
+    if geometric.near_sketch:
+        notes = (*notes, _SINGULAR_SKETCH)
     extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
-    moved = nearby_pose(system, realization) if extra else None
-    if moved is not None:
-        moved_jacobian = dimensionless_jacobian(system, moved)[0]
-        regular = geometric_rank(system, moved, jacobian=moved_jacobian)
-        if regular.rank > geometric.rank:
-            geometric, realization, jacobian = regular, moved, moved_jacobian
-            extra = _extra_geometric(generic.dependent_pairs, geometric.dependent_pairs)
-            notes = (*notes, _SINGULAR_SKETCH)
     return _RankAnalyses(system, generic, geometric, realization, jacobian, extra, notes)
 
 

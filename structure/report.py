@@ -29,11 +29,16 @@ from .assur import (
     plan_groups,
 )
 from .errors import DecompositionError, EdgeListError, MobilityError
-from .mobility import Mobility, mobility_analysis, rank_analyses
+from .mobility import Mobility, PassiveMotion, mobility_analysis, rank_analyses
 from .model import Mechanism
 from .replacement import Replacement, replace_higher_pairs
-from .rigidity.constraints import constraint_system, sketch_problems
-from .rigidity.rank import RankAnalysis, generic_rank
+from .rigidity.constraints import (
+    MissingGeometry,
+    constraint_system,
+    sketch_problems,
+    sketch_realization,
+)
+from .rigidity.rank import RankAnalysis, generic_rank, singular_blocks
 from .utils import paused_gc
 
 if TYPE_CHECKING:
@@ -53,7 +58,10 @@ class StructuralReport:
     ``replaced`` is the lower-pair mechanism the groups belong to;
     ``replacements`` maps each virtual link back to the higher pair it stands
     for. ``drivers_chosen`` is true when the drivers were picked by the
-    analyzer (none was named).
+    analyzer (none was named). ``singular`` holds the indices of the groups
+    drawn at a singular pose (their Jacobian loses rank at the sketch: the
+    structure is then read at a regular pose near it, and the solvers cannot
+    start from the sketch); ``warnings`` says so in words.
     """
 
     mechanism: Mechanism
@@ -64,10 +72,16 @@ class StructuralReport:
     drivers: tuple[str, ...]
     drivers_chosen: bool
     decomposition: Decomposition
+    singular: tuple[int, ...] = ()
 
     @property
     def groups(self) -> tuple[AssurGroup, ...]:
         return self.decomposition.groups
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """What the user should know about the answer: each group singular at the sketch."""
+        return tuple(_singular_sketch_warning(self.groups[k]) for k in self.singular)
 
     @property
     def dag(self) -> nx.DiGraph:
@@ -92,6 +106,16 @@ class StructuralReport:
 
     def __repr__(self) -> str:
         return f"<StructuralReport W={self.mobility.W} {self.formula}>"
+
+
+def _singular_sketch_warning(group: AssurGroup) -> str:
+    """The warning for a group drawn at a singular pose."""
+    return (
+        f"group {group.label} is at a singular pose in the sketch (its Jacobian loses rank "
+        "there: a dead point, or a change point of its assembly); its structure is read at a "
+        "regular pose near the sketch, and the kinematics cannot start from the sketch: draw "
+        "it at another pose, or start from other inputs"
+    )
 
 
 def _pick_drivers(
@@ -133,9 +157,10 @@ def analyze(mechanism: Mechanism, drivers: Sequence[str] | None = None) -> Struc
 def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralReport:
     # the rank analyses (a large mechanism's biggest structures) live only in _plan's
     # frame: they are gone before the groups are built
-    mechanism, mob, replaced, rmob, replacements, drivers_used, chosen, plan = _plan(
+    mechanism, mob, replaced, rmob, replacements, drivers_used, chosen, plan, singular = _plan(
         mechanism, drivers
     )
+    decomposition = build_decomposition(plan)
     return StructuralReport(
         mechanism,
         mob,
@@ -144,7 +169,58 @@ def _analyze(mechanism: Mechanism, drivers: Sequence[str] | None) -> StructuralR
         replacements,
         drivers_used,
         chosen,
-        build_decomposition(plan),
+        decomposition,
+        _singular_groups(decomposition, singular),
+    )
+
+
+def _passive_hint(error: DecompositionError, passive: Sequence[PassiveMotion]) -> Exception:
+    """The decomposition's error, saying which undetermined links have a passive freedom."""
+    turning = sorted({x.link for x in passive if x.source == "geometric"} & set(error.links))
+    if not turning:
+        return error
+    return DecompositionError(
+        f"{error}: link(s) {', '.join(turning)} can move alone (a passive freedom the sketch "
+        "shows, counted in W_passive); a roller is set aside when it is declared on its "
+        "higher pair (roller=LINK)",
+        error.links,
+    )
+
+
+def _singular_links(
+    plan: GroupPlan, generic: RankAnalysis, geometric: RankAnalysis | None
+) -> list[set[str]]:
+    """The links of each structural block that is singular at the sketch, when the sketch is.
+
+    Only asked when the geometric analysis had to leave a singular sketch for a
+    regular pose near it (``near_sketch``): the usual sketch costs nothing.
+    """
+    if geometric is None or not geometric.near_sketch:
+        return []
+    mechanism, drivers = plan.mechanism, plan.drivers
+    structural = generic
+    if structural.system.mechanism is not mechanism or structural.blocks is None:
+        structural = generic_rank(constraint_system(mechanism, drivers))
+        if structural.blocks is None:
+            return []
+    system = structural.system
+    try:
+        sketch = sketch_realization(system)
+    except MissingGeometry:
+        return []
+    found = []
+    for b in singular_blocks(structural, sketch):
+        owners = {system.unknowns[u].owner for u in structural.blocks[b]}
+        found.append(owners & set(system.links))
+    return found
+
+
+def _singular_groups(decomposition: Decomposition, singular: list[set[str]]) -> tuple[int, ...]:
+    """The groups that hold links of a block singular at the sketch."""
+    return tuple(
+        k
+        for k, group in enumerate(decomposition.groups)
+        if any(links & set(group.links) for links in singular)
     )
 
 
@@ -152,9 +228,10 @@ def _plan(
     mechanism: Mechanism, drivers: Sequence[str] | None
 ) -> tuple[
     Mechanism, Mobility, Mechanism, Mobility, tuple[Replacement, ...], tuple[str, ...], bool,
-    GroupPlan,
+    GroupPlan, list[set[str]],
 ]:  # fmt: skip
-    """Everything :func:`analyze` finds but the groups themselves, which ``plan`` names."""
+    """Everything :func:`analyze` finds but the groups themselves, which ``plan`` names,
+    and the links of the blocks singular at the sketch."""
     if drivers is not None:
         mechanism = mechanism.with_drivers(drivers)
     missing = sketch_problems(mechanism)
@@ -193,9 +270,14 @@ def _plan(
     elif chosen:
         generic, geometric = rank_analyses(replaced, drivers_used, generic=picked)
     del picked  # its system is generic's when it was reused
-    plan = plan_groups(replaced, drivers_used, analyses=(generic, geometric))
+    try:
+        plan = plan_groups(replaced, drivers_used, analyses=(generic, geometric))
+    except DecompositionError as exc:
+        raise _passive_hint(exc, (*mob.passive, *rmob.passive)) from exc
+    singular = _singular_links(plan, generic, geometric)
     return (
-        mechanism, mob, replaced, rmob, tuple(replacements), tuple(drivers_used), chosen, plan
+        mechanism, mob, replaced, rmob, tuple(replacements), tuple(drivers_used), chosen, plan,
+        singular,
     )  # fmt: skip
 
 

@@ -15,9 +15,13 @@ from structure.errors import MechanismError, UsageError
 from structure.readwrite.edgelist import read_edgelist
 
 from ..gears.trains import (
-    balancing_moment,
-    reduced_inertia,
+    balancing_moments,
+    inertia_matrix,
+    input_speeds,
+    link_speeds,
+    relation_text,
     speed_ratios,
+    speed_relations,
     train_forces,
     train_losses,
 )
@@ -33,15 +37,34 @@ __all__ = ["run_gears"]
 
 @dataclass(frozen=True)
 class _TrainAnswer:
-    """What ``assur gears`` found; the optional parts are ``None`` when they do not apply."""
+    """What ``assur gears`` found; the optional parts are ``None`` when they do not apply.
+
+    With one input the moments and the inertia are single numbers (sympy); with
+    several, a moment per input, an inertia matrix, and the links' speeds when
+    the driver lines give the inputs' ``omega=``.
+    """
 
     mechanism: Mechanism
     ratios: TrainRatios
-    moment: Any  # a sympy number: the balancing moment by power (one input only)
-    inertia: Any  # a sympy number: the inertia reduced to the input (one input, masses)
+    moments: dict[str, Any] | None  # sympy numbers: the balancing moment on each input, by power
+    inertia: Any  # sympy number (one input) or Matrix (several): the inertia reduced to them
+    speeds: dict[str, Any] | None  # sympy numbers: every link's speed (several inputs, omega=)
     forces: TrainForces | None  # planetary force balance (module= on every mesh)
     losses: TrainLosses | None  # with --efficiency
     efficiency: float | None
+
+    @property
+    def single(self) -> bool:
+        return len(self.ratios.inputs) == 1
+
+    @property
+    def moment(self) -> Any:
+        """The balancing moment on the single input, or None."""
+        return None if self.moments is None or not self.single else self.moments[_only(self)]
+
+
+def _only(answer: _TrainAnswer) -> str:
+    return answer.ratios.inputs[0]
 
 
 def run_gears(args: argparse.Namespace) -> int:
@@ -67,29 +90,31 @@ def run_gears(args: argparse.Namespace) -> int:
 
 
 def _solve_train(mechanism: Mechanism, efficiency: float | None) -> _TrainAnswer:
-    """Ratios, then what a single input allows: balancing moment, inertia, forces, losses."""
+    """Ratios or relations, then balancing moments, inertia, speeds, forces, losses."""
     ratios = speed_ratios(mechanism)
-    single_input = len(ratios.inputs) == 1
-    moment = balancing_moment(mechanism, ratios) if single_input else None
-    inertia = (
-        reduced_inertia(mechanism, ratios)
-        if single_input and any(x.kind == "mass" for x in mechanism.loads)
-        else None
-    )
+    single = len(ratios.inputs) == 1
+    moments = balancing_moments(mechanism, ratios)
+    inertia = None
+    if any(x.kind == "mass" for x in mechanism.loads):
+        matrix = inertia_matrix(mechanism, ratios)
+        inertia = matrix[0, 0] if single else matrix
+    given = input_speeds(mechanism, ratios)
+    speeds = link_speeds(ratios, given) if given is not None and not single else None
     forces = None
-    if moment is not None and all(m.pair.module for m in ratios.meshes):
+    if moments is not None and all(m.pair.module for m in ratios.meshes):
         try:
             forces = train_forces(mechanism, ratios)
         except MechanismError:
             forces = None  # not a single-carrier planetary train: power only
     losses = None
     if efficiency is not None:
-        if forces is None:
+        if moments is None:
             raise MechanismError(
-                "mesh losses need a planetary train with module= on every mesh and a moment load"
+                "mesh losses need a moment load on the train (a 'moment LINK M' line)"
             )
-        losses = train_losses(mechanism, ratios, efficiency)
-    return _TrainAnswer(mechanism, ratios, moment, inertia, forces, losses, efficiency)
+        at = None if single or given is None else {x: float(v) for x, v in given.items()}
+        losses = train_losses(mechanism, ratios, efficiency, at)
+    return _TrainAnswer(mechanism, ratios, moments, inertia, speeds, forces, losses, efficiency)
 
 
 def _exact(value: Any) -> dict[str, Any]:
@@ -116,27 +141,58 @@ def _train_dict(answer: _TrainAnswer) -> dict[str, Any]:
             {"pair": mechanism.pair(pid).label, "side": side, "z": z}
             for (pid, side), z in ratios.teeth_found.items()
         ],
-        "speed_ratio": {link: _exact(value) for link, value in ratios.ratios.items()},
     }
-    if answer.moment is not None:
-        data["balancing_moment"] = _exact(answer.moment)
-    if answer.inertia is not None:
-        data["reduced_inertia"] = _exact(answer.inertia)
-    if answer.losses is not None:
-        data["with_losses"] = {
-            "mesh_efficiency": answer.efficiency,
-            "balancing_moment": answer.losses.balancing_moment,
-            "lost_power_per_input_speed": answer.losses.lost_power,
-            "efficiency": answer.losses.efficiency,
+    if answer.single:
+        data["speed_ratio"] = {link: _exact(value) for link, value in ratios.ratios.items()}
+    else:
+        data["relations"] = {
+            link: {
+                "exact": str(ratios.ratios[link]),
+                "text": relation_text(link, row),
+                "coefficients": {x: _exact(k) for x, k in row.items()},
+            }
+            for link, row in speed_relations(ratios).items()
         }
+    if answer.speeds is not None:
+        data["speeds"] = {link: _exact(value) for link, value in answer.speeds.items()}
+    if answer.moments is not None:
+        if answer.single:
+            data["balancing_moment"] = _exact(answer.moment)
+        else:
+            data["balancing_moments"] = {x: _exact(v) for x, v in answer.moments.items()}
+    if answer.inertia is not None:
+        if answer.single:
+            data["reduced_inertia"] = _exact(answer.inertia)
+        else:
+            data["inertia_matrix"] = [[_exact(v) for v in row] for row in answer.inertia.tolist()]
+    if answer.losses is not None:
+        losses = answer.losses
+        if answer.single:
+            data["with_losses"] = {
+                "mesh_efficiency": answer.efficiency,
+                "balancing_moment": losses.balancing_moment,
+                "lost_power_per_input_speed": losses.lost_power,
+                "efficiency": losses.efficiency,
+            }
+        else:
+            data["with_losses"] = {
+                "mesh_efficiency": answer.efficiency,
+                "balancing_moments": dict(losses.balancing_moments),
+                "lost_power": losses.lost_power,
+                "efficiency": losses.efficiency,
+            }
     if answer.forces is not None:
-        data["balancing_moment_by_force_balance"] = answer.forces.balancing_moment
+        forces = answer.forces
+        if answer.single:
+            data["balancing_moment_by_force_balance"] = forces.balancing_moment
+        else:
+            data["balancing_moments_by_force_balance"] = dict(forces.balancing_moments)
         data["planet_pin_forces"] = {
             planet: {"radial": f[0], "tangential": f[1], "magnitude": float(np.hypot(*f))}
-            for planet, f in answer.forces.pins.items()
+            for planet, f in forces.pins.items()
         }
         data["tooth_forces"] = {
-            mechanism.pair(pid).label: value for pid, value in answer.forces.tooth.items()
+            mechanism.pair(pid).label: value for pid, value in forces.tooth.items()
         }
     return data
 
@@ -154,30 +210,78 @@ def _train_lines(answer: _TrainAnswer) -> list[str]:
         pair = mechanism.pair(pid)
         out.append(f"  from coaxiality: z of {pair.links[side - 1]} in {pair.label} = {z}")
     out.append(f"DOF of the train: {ratios.dof}; input(s): {', '.join(ratios.inputs)}")
-    out.append("Speed ratios to the input (ω_link / ω_input):")
-    for link, value in ratios.ratios.items():
-        out.append(f"  {link}: {value} ≈ {float(value):.6g}")
-    moment, losses, forces = answer.moment, answer.losses, answer.forces
-    if moment is not None:
+    if answer.single:
+        out.append("Speed ratios to the input (ω_link / ω_input):")
+        for link, value in ratios.ratios.items():
+            out.append(f"  {link}: {value} ≈ {float(value):.6g}")
+    else:
+        out.extend(_several_inputs_lines(answer))
+    out.extend(_torque_lines(answer))
+    return out
+
+
+def _several_inputs_lines(answer: _TrainAnswer) -> list[str]:
+    """The relations in the inputs' speeds and, when given, the speeds themselves."""
+    ratios = answer.ratios
+    out = ["Speeds as relations in the inputs' speeds (Willis, exact):"]
+    for link, row in speed_relations(ratios).items():
+        if link not in ratios.inputs:
+            out.append(f"  {relation_text(link, row)}")
+    if answer.speeds is None:
+        out.append("  (give omega= on every driver line for the speeds themselves)")
+        return out
+    given = ", ".join(f"ω{x} = {answer.speeds[x]}" for x in ratios.inputs)
+    out.append(f"Speeds with {given} rad/s (the driver lines):")
+    for link, value in answer.speeds.items():
+        if link not in ratios.inputs:
+            out.append(f"  {link}: {value} ≈ {float(value):.6g} rad/s")
+    return out
+
+
+def _torque_lines(answer: _TrainAnswer) -> list[str]:
+    """Balancing moments, losses, the planets' force balance, the reduced inertia."""
+    out: list[str] = []
+    losses, forces = answer.losses, answer.forces
+    if answer.moments is not None and answer.single:
+        moment = answer.moment
         out.append(f"Balancing moment on the input (by power): {moment} ≈ {float(moment):.6g} N·m")
-    if losses is not None:
+    elif answer.moments is not None:
+        out.append("Balancing moments on the inputs (by power):")
+        for x, value in answer.moments.items():
+            out.append(f"  {x}: {value} ≈ {float(value):.6g} N·m")
+    if losses is not None and answer.single:
         out.append(
             f"With mesh efficiency {answer.efficiency:g}: balancing moment "
             f"{losses.balancing_moment:.6g} N·m, loss {losses.lost_power:.6g} W per rad/s of "
             f"the input, train efficiency {losses.efficiency:.4g}"
         )
-    if forces is not None:
+    elif losses is not None:
+        moments = ", ".join(f"{x}: {v:.6g} N·m" for x, v in losses.balancing_moments.items())
+        out.append(
+            f"With mesh efficiency {answer.efficiency:g}: balancing moments {moments}; "
+            f"loss {losses.lost_power:.6g} W at these speeds, train efficiency "
+            f"{losses.efficiency:.4g}"
+        )
+    if forces is not None and answer.single:
         out.append(
             f"Balancing moment from the planets' force balance: {forces.balancing_moment:.6g} N·m"
         )
+    elif forces is not None:
+        moments = ", ".join(f"{x}: {v:.6g} N·m" for x, v in forces.balancing_moments.items())
+        out.append(f"Balancing moments from the planets' force balance: {moments}")
+    if forces is not None:
         for planet, (fr, ft) in forces.pins.items():
             out.append(
                 f"  pin of planet {planet}: radial {fr:.6g} N, tangential {ft:.6g} N "
                 f"(|F| = {float(np.hypot(fr, ft)):.6g} N, pressure angle 20° included)"
             )
-    if answer.inertia is not None:
+    if answer.inertia is not None and answer.single:
         out.append(
             f"Moment of inertia reduced to the input: {answer.inertia} ≈ "
             f"{float(answer.inertia):.6g} kg·m²"
         )
+    elif answer.inertia is not None:
+        out.append(f"Inertia matrix reduced to the inputs ({', '.join(answer.ratios.inputs)}):")
+        for row in answer.inertia.tolist():
+            out.append("  " + "  ".join(f"{v} ≈ {float(v):.6g}" for v in row) + " kg·m²")
     return out

@@ -1,11 +1,13 @@
 """The report's gear-train section: meshes, Willis relations, exact speed ratios and torques.
 
 :func:`train_summary` solves what ``assur gears`` solves (without losses):
-the exact speed ratios (:func:`kinematics.gears.speed_ratios`) and, with a
-single input, the balancing moment by power, the inertia reduced to the
-input (when the file has masses) and the planets' force balance (when every
-mesh has a module); :func:`gears_html` writes them, each Willis relation as
-a MathML formula, the numbers tied to the paths of ``assur gears --json``.
+the exact speed ratios (:func:`kinematics.gears.speed_ratios`), or with
+several inputs each link's speed as a relation in theirs (and the speeds
+when the driver lines give them), the balancing moment on each input by
+power, the inertia reduced to the inputs (when the file has masses) and the
+planets' force balance (when every mesh has a module); :func:`gears_html`
+writes them, each Willis relation as a MathML formula, the numbers tied to
+the paths of ``assur gears --json``.
 """
 
 from __future__ import annotations
@@ -24,9 +26,13 @@ from structure.model import Mechanism
 from ..gears.trains import (
     TrainForces,
     TrainRatios,
-    balancing_moment,
-    reduced_inertia,
+    balancing_moments,
+    inertia_matrix,
+    input_speeds,
+    link_speeds,
+    relation_text,
     speed_ratios,
+    speed_relations,
     train_forces,
 )
 from .markup import element, note, number_cell, table
@@ -37,12 +43,30 @@ __all__ = ["TrainSummary", "gears_html", "train_summary", "willis_latex"]
 
 @dataclass(frozen=True)
 class TrainSummary:
-    """A gear train's answers; the optional ones are ``None`` where they do not apply."""
+    """A gear train's answers; the optional ones are ``None`` where they do not apply.
+
+    ``moments`` holds the balancing moment on each input (sympy numbers, by
+    power); ``inertia`` the inertia reduced to the single input (a sympy
+    number) or to several (a sympy Matrix); ``speeds`` every link's speed
+    when a train with several inputs has them all given (``omega=``).
+    """
 
     ratios: TrainRatios
-    moment: Any  # sympy number: the balancing moment on the single input, by power
-    inertia: Any  # sympy number: the inertia reduced to the single input
+    moments: dict[str, Any] | None
+    inertia: Any
     forces: TrainForces | None  # the planets' force balance (module= on every mesh)
+    speeds: dict[str, Any] | None = None
+
+    @property
+    def single(self) -> bool:
+        return len(self.ratios.inputs) == 1
+
+    @property
+    def moment(self) -> Any:
+        """The balancing moment on the single input (sympy), or None."""
+        if self.moments is None or not self.single:
+            return None
+        return self.moments[self.ratios.inputs[0]]
 
 
 def train_summary(mechanism: Mechanism) -> TrainSummary | None:
@@ -57,16 +81,20 @@ def train_summary(mechanism: Mechanism) -> TrainSummary | None:
         return None
     ratios = speed_ratios(mechanism)
     single = len(ratios.inputs) == 1
-    moment = balancing_moment(mechanism, ratios) if single else None
-    has_masses = any(x.kind == "mass" for x in mechanism.loads)
-    inertia = reduced_inertia(mechanism, ratios) if single and has_masses else None
+    moments = balancing_moments(mechanism, ratios)
+    inertia = None
+    if any(x.kind == "mass" for x in mechanism.loads):
+        matrix = inertia_matrix(mechanism, ratios)
+        inertia = matrix[0, 0] if single else matrix
+    given = input_speeds(mechanism, ratios)
+    speeds = link_speeds(ratios, given) if given is not None and not single else None
     forces = None
-    if moment is not None and all(m.pair.module for m in ratios.meshes):
+    if moments is not None and all(m.pair.module for m in ratios.meshes):
         try:
             forces = train_forces(mechanism, ratios)
         except MechanismError:
             forces = None  # not a single-carrier planetary train: power only
-    return TrainSummary(ratios, moment, inertia, forces)
+    return TrainSummary(ratios, moments, inertia, forces, speeds)
 
 
 def _teeth(ratios: TrainRatios, mesh: Mesh) -> tuple[int | None, int | None]:
@@ -135,26 +163,55 @@ def _ratio_rows(ratios: TrainRatios) -> list[list[str]]:
         exact = element(
             "td", escape(str(value)), data_source="gears", data_path="/".join((*path, "exact"))
         )
-        try:
-            number = number_cell(float(value), "gears", (*path, "float"))
-        except TypeError:  # several inputs: an expression in their speeds
-            number = element("td", "")
-        rows.append([escape(link), exact, number])
+        rows.append([escape(link), exact, number_cell(float(value), "gears", (*path, "float"))])
+    return rows
+
+
+def _relation_rows(summary: TrainSummary) -> list[list[str]]:
+    """Each link's speed as a relation in the inputs' (``relations`` of the JSON), and the
+    speed itself when the inputs' are given (``speeds``)."""
+    rows = []
+    for link, row in speed_relations(summary.ratios).items():
+        if summary.speeds is None and link in summary.ratios.inputs:
+            continue  # ωc = ωc says nothing
+        cells = [
+            escape(link),
+            element(
+                "td",
+                escape(relation_text(link, row)),
+                data_source="gears",
+                data_path=f"relations/{link}/text",
+            ),
+        ]
+        if summary.speeds is not None:
+            speed = float(summary.speeds[link])
+            cells.append(number_cell(speed, "gears", ("speeds", link, "float")))
+        rows.append(cells)
     return rows
 
 
 def _torque_lines(summary: TrainSummary, mechanism: Mechanism, lang: str) -> list[str]:
-    """The balancing moment, the reduced inertia, the planets' pin and tooth forces."""
+    """The balancing moment(s), the reduced inertia, the planets' pin and tooth forces."""
     out = []
-    if summary.moment is not None:
+    if summary.moments is not None and summary.single:
         value = f"{float(summary.moment):.6g}"
         out.append(say(lang, "train_moment", exact=summary.moment, value=value))
-    if summary.inertia is not None:
+    elif summary.moments is not None:
+        for link, moment in summary.moments.items():
+            value = f"{float(moment):.6g}"
+            out.append(say(lang, "train_moment_of", link=link, exact=moment, value=value))
+    if summary.inertia is not None and summary.single:
         value = f"{float(summary.inertia):.6g}"
         out.append(say(lang, "train_inertia", exact=summary.inertia, value=value))
+    elif summary.inertia is not None:
+        rows = "; ".join(", ".join(str(v) for v in row) for row in summary.inertia.tolist())
+        inputs = ", ".join(summary.ratios.inputs)
+        out.append(say(lang, "train_inertia_matrix", inputs=inputs, rows=f"[{rows}]"))
     forces = summary.forces
     if forces is not None:
-        out.append(say(lang, "train_force_moment", value=f"{forces.balancing_moment:.6g}"))
+        for link, moment in forces.balancing_moments.items():
+            text = say(lang, "train_force_moment", value=f"{moment:.6g}")
+            out.append(text if summary.single else f"{link}: {text}")
         for planet, (radial, tangential) in forces.pins.items():
             out.append(
                 say(
@@ -190,9 +247,16 @@ def gears_html(summary: TrainSummary, mechanism: Mechanism, lang: str) -> str:
     for mesh in ratios.meshes:
         latex = willis_latex(mesh, _teeth(ratios, mesh), mechanism.ground)
         parts.append(element("div", latex_to_mathml(latex, display=True), class_="formula"))
-    parts.append(element("h3", escape(say(lang, "h_ratios"))))
-    headings = [say(lang, "link"), say(lang, "exact"), say(lang, "value")]
-    parts.append(table(headings, _ratio_rows(ratios)))
+    if summary.single:
+        parts.append(element("h3", escape(say(lang, "h_ratios"))))
+        headings = [say(lang, "link"), say(lang, "exact"), say(lang, "value")]
+        parts.append(table(headings, _ratio_rows(ratios)))
+    else:
+        parts.append(element("h3", escape(say(lang, "h_relations"))))
+        headings = [say(lang, "link"), say(lang, "relation")]
+        if summary.speeds is not None:
+            headings.append(say(lang, "speed"))
+        parts.append(table(headings, _relation_rows(summary)))
     parts.append(element("h3", escape(say(lang, "h_torques"))))
     lines = _torque_lines(summary, mechanism, lang)
     if lines:

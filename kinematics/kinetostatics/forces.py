@@ -274,7 +274,18 @@ def forces_over(plan: SolvePlan, motion: Motion, minimum_norm: bool = False) -> 
 def _friction_loads(
     plan: SolvePlan, motion: Motion, result: ForceSweep, rough: list
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """Generalized friction loads per link from the reactions, and the power they dissipate."""
+    """Generalized friction loads per link from the reactions, and the power they dissipate.
+
+    A pin (``circle=ρ``) resists the relative turn of its links with ρ·|F|; a
+    slide (``friction=μ``) resists the slip with μ·|N|, or with a ``span`` its
+    two contacts each with μ·|N_k| (they can push on opposite sides of the
+    guide, so the sum is not the net normal force: see :func:`_contact_normals`).
+
+    Raises
+    ------
+    MechanismError
+        A rough pair whose force the solution does not determine.
+    """
     m = plan.mechanism
     n = motion.inputs.shape[0]
     loads: dict[str, np.ndarray] = {}
@@ -285,32 +296,34 @@ def _friction_loads(
             loads[link] = loads.get(link, np.zeros((n, 3))) + value
 
     for pair in rough:
-        kind = pair.kind.value
-        found = next(
-            (
-                r
-                for r in result.reactions
-                if r[2] == kind and set(r[1]) == set(pair.links) and r[0] == pair.point
-            ),
-            None,
-        )
-        if found is None:
-            continue
-        _, (x, y), _, force, _ = found
-        size = norm(force)
-        wx, wy = motion.qd[x][:, 2], motion.qd[y][:, 2]
-        if kind == "R":
+        if pair.kind is PairKind.R:
+            x, y, force = _pin_pair_force(m, result.reactions, pair)
+            size = norm(force)
+            wx, wy = motion.qd[x][:, 2], motion.qd[y][:, 2]
             spin = np.sign(wy - wx)
             moment = -(pair.circle or 0.0) * size * spin
             add(y, np.column_stack([np.zeros(n), np.zeros(n), moment]))
             add(x, np.column_stack([np.zeros(n), np.zeros(n), -moment]))
             loss += (pair.circle or 0.0) * size * np.abs(wy - wx)
             continue
+        found = _reaction_of(result.reactions, pair)
+        if found is None:
+            raise MechanismError(
+                f"the friction of pair {pair.label} needs the force in it, which the solution "
+                "does not determine"
+            )
+        _, (x, y), _, force, couple = found
         c = np.array(m.coordinates(pair.point), dtype=float)  # type: ignore[arg-type]
         p_world, v_y, _ = motion.point(y, c)
         _, v_x, _ = motion.point(x, c)
-        u = rotate_many(motion.q[x][:, 2], unit(pair.angle))
+        u = rotate_many(_turning(motion, x, y), unit(pair.angle))
+        if pair.span:
+            n1, n2 = _contact_normals(force, couple, u, pair.span / 2)
+            size = np.abs(n1) + np.abs(n2)
+        else:
+            size = norm(force)
         slip = np.einsum("ni,ni->n", v_y - v_x, u)
+        # the contacts lie on the slide's line through its point: their friction acts along it
         f = -(pair.friction or 0.0) * size[:, None] * np.sign(slip)[:, None] * u
         for link, sign in ((y, 1.0), (x, -1.0)):
             r = p_world - motion.q[link][:, :2]
@@ -318,6 +331,99 @@ def _friction_loads(
             add(link, np.column_stack([g, cross(r, g)]))
         loss += (pair.friction or 0.0) * size * np.abs(slip)
     return loads, loss
+
+
+def _turning(motion: Motion, x: str, y: str) -> np.ndarray:
+    """The angle the links of a slide have turned (they turn together), at every pose."""
+    link = x if x in motion.q else y
+    return motion.q[link][:, 2]
+
+
+def _reaction_of(reactions: tuple, pair) -> tuple | None:
+    """The reaction the solution gives for ``pair`` (its links, kind and point), if any."""
+    kind = pair.kind.value
+    return next(
+        (
+            r
+            for r in reactions
+            if r[2] == kind and set(r[1]) == set(pair.links) and r[0] == pair.point
+        ),
+        None,
+    )
+
+
+def _pin_pair_force(m: Mechanism, reactions: tuple, pair) -> tuple[str, str, np.ndarray]:
+    """``(a, b, force)``: the force (N, 2) that link ``a`` of a pin ``pair`` exerts on ``b``.
+
+    At a compound hinge the solution gives the force the pin puts on each link,
+    not the force between two of them; the hinge's pairs as written form a
+    tree of bearings, and the bearing ``pair`` carries what the pin puts on
+    the links on ``b``'s side of it.
+
+    Raises
+    ------
+    MechanismError
+        No reaction for the pair, or a compound hinge whose pairs do not join
+        its links as a tree.
+    """
+    found = _reaction_of(reactions, pair)
+    if found is not None:
+        _, (x, y), _, force, _ = found
+        return x, y, force
+    hinge = m.compound_hinges.get(pair.point) if pair.point else None
+    side = _hinge_side(m, hinge, pair) if hinge is not None else None
+    if side is None:
+        raise MechanismError(
+            f"the friction of pair {pair.label} needs the force in it, which the solution "
+            "does not determine"
+        )
+    total = None
+    for point, (a, b), kind, force, _ in reactions:
+        if point != pair.point or kind != "R":
+            continue
+        # what the reaction's a exerts on its b: the b side receives it, the a side gives it
+        share = (b in side) - (a in side)
+        if share:
+            total = share * force if total is None else total + share * force
+    if total is None:
+        raise MechanismError(f"no reaction at the compound hinge {pair.point}")
+    return pair.a, pair.b, total
+
+
+def _hinge_side(m: Mechanism, hinge, pair) -> set[str] | None:
+    """The links of ``hinge`` on ``pair.b``'s side of ``pair`` in the tree of its pairs."""
+    edges = [m.pair(pid).links for pid in hinge.pairs if pid != pair.id]
+    if pair.id not in hinge.pairs or len(edges) != len(hinge.links) - 2:
+        return None
+    side = {pair.b}
+    grown = True
+    while grown:
+        grown = False
+        for a, b in edges:
+            if (a in side) != (b in side):
+                side.update((a, b))
+                grown = True
+    return None if pair.a in side else side
+
+
+def _contact_normals(
+    force: np.ndarray, couple: np.ndarray | float, u: np.ndarray, half: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """The normal forces of a slide's two contacts at ∓``half`` along ``u``, signed along u⊥.
+
+    With N = u × F the slide's net normal force and C its couple about the
+    pair's point, the contacts carry n1 = (N − C/half)/2 and n2 = (N + C/half)/2
+    (n1 + n2 = N, half·(n2 − n1) = C). They can have opposite signs: the block
+    then bears on both faces of the guide, and its friction is μ·(|n1| + |n2|).
+    Arrays over the poses (``force`` and ``u`` (N, 2)).
+
+    >>> n1, n2 = _contact_normals(np.array([[0.0, 0.0]]), 10.0, np.array([[1.0, 0.0]]), 0.5)
+    >>> n1.tolist(), n2.tolist()
+    ([-10.0], [10.0])
+    """
+    normal = cross(u, force)
+    lever = np.asarray(couple, dtype=float) / half
+    return (normal - lever) / 2, (normal + lever) / 2
 
 
 def _forces_once(
@@ -880,10 +986,9 @@ def _two_contacts(
     else:
         direction = force / size
     side = float(cross(u, direction))  # ±1: u × direction
-    # N1 + N2 = |N|; the contacts at −half and +half along u give the moment C
-    n1 = (size - couple / (half * side)) / 2
-    n2 = (size + couple / (half * side)) / 2
-    return n1 * direction, n2 * direction
+    # signed along u⊥ (u × direction = side): back along the direction of the net force
+    n1, n2 = _contact_normals((side * size * perpendicular(u))[None, :], couple, u[None, :], half)
+    return side * float(n1[0]) * direction, side * float(n2[0]) * direction
 
 
 def _contact_forces(plan: SolvePlan, reactions: list) -> list:

@@ -23,12 +23,15 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+import numpy as np
 import sympy
+from sympy.matrices.exceptions import NonInvertibleMatrixError
 
+from structure.errors import MechanismError
 from structure.expressions import exact_float, exact_value
 from structure.model import Load, Mechanism
 
-from ..errors import IndeterminateError
+from ..errors import IndeterminateError, SingularPoseError
 from ..kinetostatics.forces import ground_equations
 from .equations import Equation, equation_point
 from .plan import DriverStep, GroupStep, SolvePlan
@@ -164,7 +167,7 @@ def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
                 else:
                     rhs_v[r : r + eq.size, 0] -= part * qd.get(link, zero)
             r += eq.size
-        z_dot = _solve(jac, rhs_v)
+        z_dot = _solve(jac, rhs_v, plan, step)
         for link, i in index.items():
             qd[link] = z_dot[3 * i : 3 * i + 3, 0]
         rhs_a = sympy.zeros(size, 1)
@@ -176,7 +179,7 @@ def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
             va, vb = qd.get(eq.a, zero), qd.get(eq.b, zero)
             rhs_a[r : r + eq.size, 0] -= _bias(eq.kind, c, n, va, vb)
             r += eq.size
-        z_ddot = _solve(jac, rhs_a)
+        z_ddot = _solve(jac, rhs_a, plan, step)
         for link, i in index.items():
             qdd[link] = z_ddot[3 * i : 3 * i + 3, 0]
     links = {
@@ -276,11 +279,18 @@ def forces_exact(plan: SolvePlan) -> ExactForces:
     Raises
     ------
     MechanismError
-        A redundant link: the reactions are indeterminate.
+        A redundant link: the reactions are indeterminate; or a pair with
+        friction, which the exact solution does not take.
     """
     if any(s.group is None for s in plan.steps):
         raise IndeterminateError("the mechanism is over-constrained: reactions are indeterminate")
     m = plan.mechanism
+    rough = [p.label for p in m.pairs if p.friction or p.circle]
+    if rough:
+        raise MechanismError(
+            f"the exact reactions leave friction out, and pair(s) {', '.join(rough)} have it "
+            "(friction= or circle=): drop --exact for the reactions with friction"
+        )
     kin = solve_exact(plan)
     loads = _exact_loads(plan, kin)
     carried: dict[str, sympy.Matrix] = {}
@@ -328,7 +338,7 @@ def _exact_group_reactions(
     rhs = sympy.Matrix.vstack(
         *[-(loads.get(x, sympy.zeros(3, 1)) + carried.get(x, sympy.zeros(3, 1))) for x in index]
     )
-    lam = jt.LUsolve(rhs)
+    lam = _solve(jt, rhs, plan, step)
     r = 0
     for eq, ja, jb, _, _ in rows:
         value = lam[r : r + eq.size, 0]
@@ -365,8 +375,20 @@ def _exact_driver_balance(
     return rows, jt.LUsolve(-total), u
 
 
-def _solve(jac: sympy.Matrix, rhs: sympy.Matrix) -> sympy.Matrix:
-    if jac.rows == jac.cols:
-        return jac.LUsolve(rhs)
-    solution, params = jac.gauss_jordan_solve(rhs)  # a redundant link: consistent rows
+def _solve(jac: sympy.Matrix, rhs: sympy.Matrix, plan: SolvePlan, step: GroupStep) -> sympy.Matrix:
+    """``jac·x = rhs`` for a group at the sketch.
+
+    Raises
+    ------
+    SingularPoseError
+        The group's Jacobian is singular at the sketch (a dead point).
+    """
+    try:
+        if jac.rows == jac.cols:
+            return jac.LUsolve(rhs)
+        solution, params = jac.gauss_jordan_solve(rhs)  # a redundant link: consistent rows
+    except NonInvertibleMatrixError:
+        raise SingularPoseError.at(
+            step.label, np.zeros(len(plan.drivers)), "exactly singular", plan.driver_kinds
+        ) from None
     return solution.subs({p: 0 for p in params})

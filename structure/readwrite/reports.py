@@ -91,6 +91,8 @@ def format_report(report: StructuralReport, choices: Sequence[DriverChoice] = ()
     out.append(f"Mechanism class: {roman(report.mechanism_class)}")
     out.append(f"Structural formula: {report.formula}")
     out.append(f"                    {report.textbook_formula}")
+    for warning in report.warnings:
+        out.append(f"Warning: {warning}")
     if choices:
         out.append("")
         out.append("Every admissible choice of drivers:")
@@ -270,6 +272,9 @@ def _report_items(
     yield "mechanism_class", report.mechanism_class
     yield "formula", report.formula
     yield "textbook_formula", report.textbook_formula
+    if report.singular:  # only then: the answers of a regular sketch stay as they were
+        yield "warnings", list(report.warnings)
+        yield "singular_groups", [report.groups[k].label for k in report.singular]
     if choices:
         yield (
             "driver_choices",

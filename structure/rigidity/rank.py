@@ -58,6 +58,7 @@ __all__ = [
     "generic_rank",
     "geometric_rank",
     "null_space",
+    "singular_blocks",
     "sketch_scale",
 ]
 
@@ -91,6 +92,10 @@ class RankAnalysis:
         to (one entry per unit; tuples, which cost half a list's memory).
     method : str
         ``'structural'`` (matching + block determinants) or ``'dense'``.
+    near_sketch : bool
+        A dense analysis made at a regular pose near the sketch, because the
+        sketch itself is a singular pose (its rank drops there; see
+        :func:`~structure.rigidity.regularity.regular_rank`).
     """
 
     system: ConstraintSystem
@@ -101,6 +106,12 @@ class RankAnalysis:
     blocks: Sequence[Sequence[int]] | None
     assigned: Sequence[Sequence[int]] = field(repr=False)
     method: str
+    near_sketch: bool = False
+
+    @property
+    def n_dependent(self) -> int:
+        """How many scalar rows (pairs' and drivers') depend on earlier rows."""
+        return sum(self.dependent.values())
 
     @property
     def dependent_pairs(self) -> dict[int, int]:
@@ -596,6 +607,56 @@ def geometric_rank(
     return dense_rank(system, realization, method="dense", jacobian=jacobian)
 
 
+def singular_blocks(analysis: RankAnalysis, realization: Realization) -> list[int]:
+    """The blocks of a regular structural ``analysis`` singular at ``realization``.
+
+    Generically every block is regular (that is what ``analysis`` found); at a
+    particular pose one may not be: a dyad drawn with its two links in line (a
+    dead point), a parallelogram folded flat. Each block's square Jacobian is
+    made dimensionless as :func:`dimensionless_jacobian` does and judged with
+    the rank's tolerance.
+
+    >>> from structure import parse_edgelist
+    >>> from structure.rigidity import constraint_system, sketch_realization
+    >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+    ...     "point A 0 0", "point B 0 1", "point C 2 1", "point D 3 1"])  # B, C, D in line
+    >>> system = constraint_system(m, ["1"])
+    >>> analysis = generic_rank(system)
+    >>> [sorted({system.unknowns[u].owner for u in analysis.blocks[b]})
+    ...  for b in singular_blocks(analysis, sketch_realization(system))]
+    [['2', '3']]
+    """
+    system, blocks = analysis.system, analysis.blocks
+    if blocks is None:
+        raise ValueError("singular_blocks needs a regular structural analysis (with blocks)")
+    offsets, _ = system.scalar_offsets()
+    uo = offsets.tolist()
+    assigned = analysis.assigned
+    matched = assigned.tolist() if isinstance(assigned, Assignment) else assigned
+    rows_of = _rows_of_blocks(system, list(blocks), matched)
+    length = sketch_scale(system, realization)
+    bad = []
+    for b, units in enumerate(blocks):
+        rows = rows_of(b)
+        if _trivially_regular(system, units, rows):
+            continue
+        a = _block_matrix(system, realization, list(units), rows, matched, uo)
+        if a is None:
+            bad.append(b)
+            continue
+        matrix = np.array(a)
+        angle_columns = [
+            system.unknown_kind(u) == "ang" for u in units for _ in range(system.unknown_size(u))
+        ]
+        matrix[:, np.array(angle_columns, dtype=bool)] /= length
+        # a row block gives the matrix as many rows as units it is matched to
+        angle_rows = [_is_angle_row(system, r) for r in rows for _ in matched[r]]
+        matrix[np.array(angle_rows, dtype=bool)] *= length
+        if _singular_ratios([matrix.tolist()])[0] <= _RANK_TOL:
+            bad.append(b)
+    return bad
+
+
 def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
     """The realization's size (largest span of its points), which makes lengths dimensionless.
 
@@ -616,18 +677,21 @@ def sketch_scale(system: ConstraintSystem, realization: Realization) -> float:
     return far if far > 0 else 1.0
 
 
+def _is_angle_row(system: ConstraintSystem, r: int) -> bool:
+    """Whether row block ``r`` is an angle (the others are lengths)."""
+    kind = system.row_kind[r]
+    if kind is RowKind.SLIDE_ANGLE:
+        return True
+    if kind in (RowKind.DRIVER, RowKind.PROBE):
+        return system.unknown_kind(system.row_adj[r][0]) == "ang"
+    return False
+
+
 def _angle_rows(system: ConstraintSystem, rows: Sequence[int]) -> list[bool]:
     """Which scalar rows of the row blocks ``rows`` are angles (the others are lengths)."""
     out: list[bool] = []
     for r in rows:
-        kind = system.row_kind[r]
-        if kind is RowKind.SLIDE_ANGLE:
-            angle = True
-        elif kind in (RowKind.DRIVER, RowKind.PROBE):
-            angle = system.unknown_kind(system.row_adj[r][0]) == "ang"
-        else:
-            angle = False
-        out.extend([angle] * system.row_size[r])
+        out.extend([_is_angle_row(system, r)] * system.row_size[r])
     return out
 
 

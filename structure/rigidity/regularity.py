@@ -7,7 +7,9 @@ drops and the counts would report a redundancy the mechanism does not have.
 THEORY §3: step along the null space of the pair rows (the motions the pairs
 allow, drivers free), project back onto the constraints by Gauss–Newton and
 recompute the rank. A higher rank there means the sketch was singular; the
-nearby pose is regular and its counts are the mechanism's.
+nearby pose is regular and its counts are the mechanism's. The same holds for
+the drivers: at a dead point (a dyad drawn with its links in line) a driver's
+row depends on the pairs' at the sketch only (:func:`regular_rank`).
 
 >>> from structure import parse_edgelist
 >>> from structure.rigidity import constraint_system, sketch_realization
@@ -23,13 +25,20 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import replace
 
 import numpy as np
 
 from .constraints import ConstraintSystem, Realization, RowKind
-from .rank import dimensionless_jacobian, null_space, sketch_scale
+from .rank import (
+    RankAnalysis,
+    dimensionless_jacobian,
+    geometric_rank,
+    null_space,
+    sketch_scale,
+)
 
-__all__ = ["nearby_pose"]
+__all__ = ["nearby_pose", "regular_rank"]
 
 _STEP = 1e-3  # of the sketch's size
 _TOL = 1e-12  # residual, of the sketch's size
@@ -149,3 +158,46 @@ def nearby_pose(
             step[position_columns] *= length
             z = z + step
     return None
+
+
+def regular_rank(
+    system: ConstraintSystem,
+    sketch: Realization,
+    *,
+    jacobian: np.ndarray | None = None,
+    baseline: int = 0,
+) -> tuple[RankAnalysis, Realization, np.ndarray]:
+    """The rank at the sketch, or at a regular pose near it when the sketch is singular.
+
+    The sketch's rank tells geometric redundancy from a lucky count only at a
+    regular pose. When the sketch shows more dependent rows (pairs' or
+    drivers') than ``baseline`` (what every pose has, e.g. the generic count),
+    a pose reached from it along the motions its pairs allow is tried: if it
+    has fewer, the sketch was singular (a dead point, a change point) and that
+    pose's analysis is returned, marked ``near_sketch``. A true geometric
+    redundancy (a parallelogram's third crank) is there at every pose and
+    stays. Returns the analysis, its pose and the dimensionless Jacobian there
+    (``jacobian``: the sketch's, when already computed).
+
+    >>> from structure import parse_edgelist
+    >>> from structure.rigidity import constraint_system, sketch_realization
+    >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+    ...     "point A 0 0", "point B 0 1", "point C 2 1", "point D 3 1"])  # B, C, D in line
+    >>> system = constraint_system(m, ["1"])
+    >>> analysis, _, _ = regular_rank(system, sketch_realization(system))
+    >>> analysis.dependent_drivers, analysis.near_sketch
+    ([], True)
+    """
+    if jacobian is None:
+        jacobian = dimensionless_jacobian(system, sketch)[0]
+    analysis = geometric_rank(system, sketch, jacobian=jacobian)
+    if analysis.n_dependent <= baseline:
+        return analysis, sketch, jacobian
+    moved = nearby_pose(system, sketch)
+    if moved is None:
+        return analysis, sketch, jacobian
+    moved_jacobian = dimensionless_jacobian(system, moved)[0]
+    regular = geometric_rank(system, moved, jacobian=moved_jacobian)
+    if regular.n_dependent >= analysis.n_dependent:
+        return analysis, sketch, jacobian
+    return replace(regular, near_sketch=True), moved, moved_jacobian

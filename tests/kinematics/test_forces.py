@@ -14,8 +14,10 @@ from hypothesis import strategies as st
 from kinematics.cli.main import main
 from kinematics.kinetostatics.forces import IndeterminateError, forces_over, solve_forces
 from kinematics.results.serialization import forces_to_dict
+from kinematics.solvers.exact import forces_exact
 from kinematics.solvers.plan import make_plan
 from kinematics.solvers.solve import SingularPoseError, solve_pose, solve_poses
+from structure.errors import MechanismError
 from structure.generators import random_mechanism
 from structure.model import Load, PointDef
 from structure.readwrite.edgelist import parse_edgelist, write_edgelist
@@ -163,6 +165,106 @@ force 1 B 0 -200
     result = forces_of(text)
     assert result.balancing_moment["1"] == pytest.approx(22.0)
     assert result.friction_loss == pytest.approx(10.0)
+
+
+OVERHUNG_BLOCK = """
+driver 1 v=2
+0 1 P S angle=0 span=0.1 friction=0.3
+point S 0 0
+point K {x} 0 on=1
+force 1 K 0 -100
+"""
+
+
+def _contact_sizes(result, point):
+    n1, n2 = reaction(result, point).contacts
+    return sorted([float(np.hypot(*n1)), float(np.hypot(*n2))])
+
+
+def test_slide_friction_counts_both_contacts_when_they_bear_on_opposite_faces():
+    # issue 22, item 9. A block on a guide with two contacts at x = ∓0.05 (span 0.1), pressed
+    # by 100 N at K, 0.1 m ahead of S, slides at 2 m/s. Net normal N = 100 up; the couple about
+    # S is 0.1·100 = 10 N·m, so n1 + n2 = 100 and 0.05·(n2 − n1) = 10: n2 = 150, n1 = −50 (the
+    # back contact bears on the other face). The friction is μ(|n1| + |n2|) = 0.3·200 = 60 N
+    # (not μ|N| = 30 N); it acts along the guide's line through S, so it leaves the couple and
+    # the contacts as they are. Balancing force 60 N, loss 60·2 = 120 W.
+    result = forces_of(OVERHUNG_BLOCK.format(x=0.1))
+    assert _contact_sizes(result, "S") == pytest.approx([50.0, 150.0])
+    assert result.balancing_moment["1"] == pytest.approx(60.0)
+    assert result.friction_loss == pytest.approx(120.0)
+    assert result.power_residual < 1e-12
+    # the load between the contacts (0.02 m ahead): 0.05·(n2 − n1) = 2, n = 30 and 70, both
+    # on one face: the friction is μ·100 = 30 N either way
+    result = forces_of(OVERHUNG_BLOCK.format(x=0.02))
+    assert _contact_sizes(result, "S") == pytest.approx([30.0, 70.0])
+    assert result.balancing_moment["1"] == pytest.approx(30.0)
+    assert result.friction_loss == pytest.approx(60.0)
+
+
+SINE_WITH_FRICTION = (
+    (FIXTURES / "ch3_3_6_sine_mechanism.edges")
+    .read_text()
+    .replace("span=0.2", "span=0.2 friction=0.1")
+)
+
+
+def test_friction_of_a_yoke_held_by_a_couple_alone():
+    # problem 3.6 (Scotch yoke) with μ = 0.1 in the yoke's guide, contacts ∓0.1 m (span 0.2).
+    # The guide's net normal force is 0: it holds the yoke by a couple alone, C = (P + F)·h,
+    # h = 0.05·√2 the height of the block B over the yoke's axis, F the friction. The
+    # contacts carry ∓C/(2·0.1) and F = μ·|C|/0.1 = μ·h·(P + F)/0.1, so
+    #   F = μ·h·P/(0.1 − μ·h) = 7.07107/0.0929289 = 76.0911 N
+    # (it was 0: μ times the net normal force). The crank then pushes B with P + F along x:
+    # M = (P + F)·h = (1000 + 76.0911)·0.0707107 = 76.0911 N·m, contacts ±380.456 N,
+    # loss F·|v_yoke| = 76.0911·0.5·√2 = 53.8046 W.
+    mu, h, half = 0.1, 0.05 * math.sqrt(2), 0.1
+    friction = mu * h * 1000 / (half - mu * h)
+    result = forces_of(SINE_WITH_FRICTION)
+    couple = (1000 + friction) * h
+    assert _contact_sizes(result, "S") == pytest.approx([couple / (2 * half)] * 2)
+    assert result.balancing_moment["1"] == pytest.approx((1000 + friction) * h)
+    assert result.friction_loss == pytest.approx(friction * 0.5 * math.sqrt(2))
+    assert result.power_residual < 1e-12
+
+
+def test_slide_friction_over_a_sweep_is_the_contacts_at_each_pose():
+    # the vectorised sweep against the single poses' reported contacts: at every pose the loss
+    # is μ(|N1| + |N2|)·|v| with the yoke's speed |v| = 0.1·10·|sin φ|
+    plan = make_plan(analyze(parse_edgelist(SINE_WITH_FRICTION.strip().splitlines())))
+    inputs = np.array([[0.3], [1.0], [2.0], [-0.7]])
+    sweep = forces_over(plan, solve_poses(plan, inputs))
+    for (turned,), loss in zip(inputs, sweep.friction_loss, strict=True):
+        single = solve_forces(plan, (float(turned),))
+        speed = 0.1 * 10 * abs(math.sin(math.radians(45) + turned))
+        assert loss == pytest.approx(0.1 * sum(_contact_sizes(single, "S")) * speed, rel=1e-9)
+        assert single.friction_loss == pytest.approx(loss, rel=1e-12)
+
+
+def test_friction_of_a_bearing_inside_a_compound_hinge():
+    # two cranks on one ground pin A: link 2 turns on link 1's pin (the pair 1–2 written with
+    # circle=ρ), link 1 is held (ω1 = 0) and link 2 turns at 10 rad/s against 100 N at 0.1 m.
+    # The solver joins both to the ground at A, so the pair 1–2 has no reaction of its own;
+    # its bearing carries what the pin puts on link 2: |R| = 100 N. The friction moment
+    # ρ·100 = 1 N·m brakes 2 (M2 = 10 + 1 = 11) and drags 1 (M1 = −1); loss 1·10 = 10 W.
+    text = """
+driver 1 omega=0
+driver 2 omega=10
+0 1 R A
+1 2 R A circle=0.01
+point A 0 0
+point B 0.1 0 on=2
+force 2 B 0 -100
+"""
+    result = forces_of(text)
+    assert result.balancing_moment["2"] == pytest.approx(11.0)
+    assert result.balancing_moment["1"] == pytest.approx(-1.0)
+    assert result.friction_loss == pytest.approx(10.0)
+
+
+def test_exact_reactions_refuse_friction():
+    plan = make_plan(analyze(parse_edgelist(SINE_WITH_FRICTION.strip().splitlines())))
+    with pytest.raises(MechanismError, match=r"3–0 P S.*drop --exact"):
+        forces_exact(plan)
 
 
 def test_friction_in_a_crank_slider_is_found_by_iteration():

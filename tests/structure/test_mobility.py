@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
-from structure.errors import MobilityError
+from structure.errors import DecompositionError, MobilityError
 from structure.mobility import mobility
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
-from structure.report import analyze
+from structure.report import all_driver_choices, analyze
 
 from ..conftest import FIXTURES
 
@@ -186,3 +188,131 @@ def test_a_true_geometric_redundancy_survives_the_regularity_check():
     mob = mobility(read_edgelist(FIXTURES / "parallelogram_redundant.edges"))
     assert (mob.r, mob.W) == (1, 1)
     assert not any("singular pose" in note for note in mob.notes)
+
+
+# ------------------------------------------------------------ a sketch at a singular pose
+# Issue 22, item 13. The four-bar AB = 0.1, BC = 0.2, CD = 0.2, AD = √0.13 drawn with the
+# crank and the coupler in line (A, B, C on the x axis; D above C). Counted by hand:
+# W = 3·3 − 2·4 = 1; generically the 8 pair rows and the driver's row are independent, so
+# r = 0 and nothing is passive, whichever link drives.
+# * the rocker 3 driving: with C held, the dyad (1, 2) spans A–C with |AB| + |BC| = |AC|: the
+#   two circles about A and C touch at B, so B can move across AC to first order and the
+#   dyad's Jacobian loses a rank (a dead point). The sketch then shows the driver's row as
+#   dependent on the pairs' (once "the motion of driver 3 is already fixed"); a pose a small
+#   turn away is regular, and the answer is the generic one: I(3) → II(1,2), II(1,2) singular
+#   at the sketch.
+# * the crank 1 driving: the dyad (2, 3) joins B and D with BC along x and CD along y, not
+#   in line: regular, no warning (the rocker is at a limit: ω3 = 0, kinematics test below).
+TOGGLE = """
+name four-bar with the crank and the coupler in line
+driver {driver}
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0.1 0
+point C 0.3 0
+point D 0.3 0.2
+"""
+
+
+def _counts(report):
+    mob = report.mobility
+    return mob.W, mob.r, mob.W_passive, report.formula
+
+
+def test_a_toggle_sketch_is_classified_as_the_generic_four_bar():
+    report = analyze(mech(TOGGLE.format(driver="3")))
+    assert _counts(report) == (1, 0, 0, "I(3) → II(1,2)")
+    assert [report.groups[k].label for k in report.singular] == ["II(1,2)"]
+    (warning,) = report.warnings
+    assert "group II(1,2) is at a singular pose in the sketch" in warning
+    assert any("singular pose" in note for note in report.mobility.notes)
+    # the same four-bar drawn at a regular pose gives the same answer: the crank at 60°,
+    # B = (0.05, 0.05·√3), C where the circles of radius 0.2 about B and D meet (the nearer
+    # to the x axis): |BD| = 0.274516, C = midpoint ± 0.136·⊥ = (0.235089, 0.010827)
+    regular = TOGGLE.format(driver="3").replace("point B 0.1 0", "point B 0.05 0.05*sqrt(3)")
+    regular = analyze(mech(regular.replace("point C 0.3 0", "point C 0.235089176 0.010826575")))
+    assert _counts(regular) == _counts(report)
+    assert regular.singular == () and regular.warnings == ()
+
+
+def test_a_limit_position_of_the_rocker_is_not_a_singular_pose():
+    report = analyze(mech(TOGGLE.format(driver="1")))
+    assert _counts(report) == (1, 0, 0, "I(1) → II(2,3)")
+    assert report.singular == () and report.warnings == ()
+    assert not any("singular pose" in note for note in report.mobility.notes)
+
+
+def test_coupler_and_rocker_in_line_is_a_dead_point_of_the_crank_driven_dyad():
+    # B(0, 0.1), C(0.2, 0.1), D(0.3, 0.1): with B held, C can move across BD to first order
+    text = TOGGLE.format(driver="1")
+    for old, new in (("B 0.1 0", "B 0 0.1"), ("C 0.3 0", "C 0.2 0.1"), ("D 0.3 0.2", "D 0.3 0.1")):
+        text = text.replace(f"point {old}", f"point {new}")
+    report = analyze(mech(text))
+    assert _counts(report) == (1, 0, 0, "I(1) → II(2,3)")
+    assert [report.groups[k].label for k in report.singular] == ["II(2,3)"]
+
+
+def test_a_flat_parallelogram_is_a_generic_four_bar_with_its_dyad_singular():
+    # folded flat, B, C and D are in line: the dyad (2, 3) is singular at the sketch
+    report = analyze(parse_edgelist(FLAT_PARALLELOGRAM))
+    assert _counts(report) == (1, 0, 0, "I(1) → II(2,3)")
+    assert [report.groups[k].label for k in report.singular] == ["II(2,3)"]
+
+
+def test_a_true_geometric_redundancy_is_no_singular_sketch():
+    # the third parallel crank is redundant at every pose: r = 1, set aside, no warning
+    report = analyze(read_edgelist(FIXTURES / "parallelogram_redundant.edges"))
+    assert (report.mobility.r, report.mobility.W) == (1, 1)
+    assert [(x.label, x.source) for x in report.mobility.redundant] == [("4–2 R F", "geometric")]
+    assert report.decomposition.removed_links == ("4",)
+    assert report.singular == () and report.warnings == ()
+
+
+def test_passive_freedoms_of_the_cam_roller_are_still_found():
+    # the roller's spin (declared): W = 3·3 − (2·3 + 1) − 1 = 1; undeclared, the sketch shows
+    # it (the contact normal passes through the roller's axis) and the error says so
+    report = analyze(read_edgelist(FIXTURES / "cam_roller_follower.edges"))
+    assert [(p.link, p.dof, p.source) for p in report.mobility.passive] == [("3", 1, "roller")]
+    assert report.mobility.W == 1 and report.warnings == ()
+    text = (FIXTURES / "cam_roller_follower.edges").read_text().replace(" roller=3", "")
+    m = parse_edgelist(text.splitlines())
+    assert [(p.link, p.source) for p in mobility(m).passive] == [("3", "geometric")]
+    with pytest.raises(DecompositionError, match=r"link\(s\) 3 can move alone.*roller=LINK"):
+        analyze(m)
+
+
+def test_every_driver_choice_of_a_toggle_sketch_is_listed():
+    # all_driver_choices decomposes each choice at the sketch: the rocker's choice used to be
+    # dropped there as "already fixed"
+    report = analyze(mech(TOGGLE.format(driver="1")))
+    assert [c.drivers for c in all_driver_choices(report)] == [("1",), ("3",)]
+
+
+def test_a_cam_roller_drawn_at_a_dead_point_keeps_its_passive_roller():
+    # the cam fixture's disc (centre C1) and roller (axis R0, contact K on C1–R0) with the arm
+    # Q–R0 drawn in line with C1–R0 (all at 60° from C1): once replaced, the dyad (v1, 2) has
+    # its links in line, a dead point; the roller's spin is still the one passive freedom
+    # (W = 3·3 − (2·3 + 1) − 1 = 1)
+    c1x, c1y, c, s = 0.017320508, 0.01, 0.5, math.sqrt(3) / 2
+    point = {
+        "K": (c1x + 0.05 * c, c1y + 0.05 * s),
+        "R0": (c1x + 0.065 * c, c1y + 0.065 * s),
+        "Q": (c1x + 0.165 * c, c1y + 0.165 * s),
+    }
+    text = """
+driver 1 omega=10
+0 1 R O
+0 2 R Q
+2 3 R R0
+1 3 H K roller=3 centers=C1,R0
+point O 0 0
+point C1 0.017320508 0.01
+"""
+    lines = [*text.strip().splitlines(), *(f"point {k} {x!r} {y!r}" for k, (x, y) in point.items())]
+    report = analyze(parse_edgelist(lines))
+    assert [(p.link, p.source) for p in report.mobility.passive] == [("3", "roller")]
+    assert _counts(report) == (1, 0, 1, "I(1) → II(2,v1)")
+    assert [report.groups[k].label for k in report.singular] == ["II(2,v1)"]

@@ -317,3 +317,63 @@ def test_rigid_truss_exits_1(capsys, tmp_path):
     report = json.loads(out)
     assert (report["n"], report["P5"], report["W"]) == (2, 3, 0)
     assert "W = 0" in report["error"]
+
+
+# ------------------------------------------------------------ a sketch at a singular pose
+# Issue 22, item 13: the four-bar drawn with its crank and coupler in line, the rocker 3
+# driving (hand count and dead point in tests/structure/test_mobility.py): classify answers
+# as for any pose, and warns that II(1,2) is singular at the sketch; the solvers refuse that
+# pose, naming the group and the input.
+TOGGLE = """name four-bar with the crank and the coupler in line
+driver 3 omega=1
+0 1 R A
+1 2 R B
+2 3 R C
+3 0 R D
+point A 0 0
+point B 0.1 0
+point C 0.3 0
+point D 0.3 0.2
+"""
+
+
+def _toggle(tmp_path) -> str:
+    path = tmp_path / "toggle.edges"
+    path.write_text(TOGGLE, encoding="utf-8")
+    return str(path)
+
+
+def test_classify_a_toggle_sketch_warns_of_its_singular_group(capsys, tmp_path):
+    code, out, err = run(capsys, "classify", _toggle(tmp_path))
+    assert (code, err) == (0, "")
+    assert "Structural formula: I(3) → II(1,2)" in out
+    assert "W = 3·3 − (2·4 + 0) + 0 − 0 = 1" in out
+    assert "Warning: group II(1,2) is at a singular pose in the sketch" in out
+    data = run_json(capsys, _toggle(tmp_path))
+    assert data["W"] == 1 and data["formula"] == "I(3) → II(1,2)"
+    assert data["singular_groups"] == ["II(1,2)"]
+    assert len(data["warnings"]) == 1 and "II(1,2)" in data["warnings"][0]
+
+
+def test_a_regular_sketch_has_no_warnings_key(capsys):
+    assert "warnings" not in run_json(capsys, fixture("fourbar"))
+
+
+@pytest.mark.parametrize("exact", [(), ("--exact",)], ids=["numbers", "exact"])
+@pytest.mark.parametrize("command", ["kinematics", "forces"])
+def test_the_solvers_refuse_a_toggle_sketch_naming_the_group(capsys, tmp_path, command, exact):
+    code, out, err = run(capsys, command, _toggle(tmp_path), *exact)
+    assert (code, out) == (1, "")
+    assert "group II(1,2)" in err and "input 0°" in err and "dead centre" in err
+
+
+def test_the_rocker_at_its_limit_moves_the_crank_driven_four_bar(capsys, tmp_path):
+    # the crank driving at the same pose: v_B = ω1 × AB = (0, 0.1); C moves across DC (along
+    # x) and v_C = v_B + ω2 × BC = (0, 0.1 + 0.2·ω2): so ω2 = −0.5 and v_C = 0, ω3 = 0
+    path = tmp_path / "limit.edges"
+    path.write_text(TOGGLE.replace("driver 3", "driver 1"), encoding="utf-8")
+    code, out, _ = run(capsys, "kinematics", str(path), "--json")
+    assert code == 0
+    links = json.loads(out)["links"]
+    assert links["2"]["omega"] == pytest.approx(-0.5)
+    assert links["3"]["omega"] == pytest.approx(0.0, abs=1e-12)

@@ -75,6 +75,12 @@ class CamGeometry:
     profile_radius: np.ndarray
     pressure: np.ndarray
     way: np.ndarray
+    #: the normal before it is made a unit vector (``sense·J·A``; ``m`` for a flat face): a
+    #: product with it is exactly zero where it should be (a dwell: the normal is radial)
+    raw_normal: np.ndarray | None = None
+    #: a flat face: the contact's place along it, ``h'/(α' − sense)`` along ``J·m`` from the foot
+    #: of the perpendicular from the cam's centre (``K = h·m + t·J·m``)
+    along_face: np.ndarray | None = None
 
 
 def cam_geometry(design: CamDesign, theta: np.ndarray) -> CamGeometry:
@@ -90,7 +96,8 @@ def cam_geometry(design: CamDesign, theta: np.ndarray) -> CamGeometry:
     a = p1 - sense * perpendicular(p)
     b = p2 - 2.0 * sense * perpendicular(p1) - p
     speed = norm(a)
-    normal = sense * perpendicular(a) / speed[:, None]
+    raw = sense * perpendicular(a)
+    normal = raw / speed[:, None]
     with np.errstate(divide="ignore", invalid="ignore"):
         rho = -sense * speed**3 / cross(a, b)
     rf = layout.roller_radius
@@ -98,7 +105,7 @@ def cam_geometry(design: CamDesign, theta: np.ndarray) -> CamGeometry:
     return CamGeometry(
         theta, s, s1, s2, s3,
         rotate_many(back, p), rotate_many(back, contact), p, contact, normal,
-        p - rho[:, None] * normal, rho, rho - rf, _pressure(normal, way, sense), way,
+        p - rho[:, None] * normal, rho, rho - rf, _pressure(normal, way, sense), way, raw,
     )  # fmt: skip
 
 
@@ -114,7 +121,8 @@ def _flat(design: CamDesign, theta: np.ndarray, back: np.ndarray, values: tuple)
         m = np.stack([np.cos(alpha), np.sin(alpha)], axis=1)
     jm = perpendicular(m)
     turn = a1 - sense
-    contact = h[:, None] * m + (h1 / turn)[:, None] * jm
+    along = h1 / turn
+    contact = h[:, None] * m + along[:, None] * jm
     rho = h + (h2 * turn - h1 * a2) / turn**3
     if layout.follower.translating:
         way = np.broadcast_to(np.array([0.0, 1.0]), contact.shape).copy()
@@ -124,7 +132,7 @@ def _flat(design: CamDesign, theta: np.ndarray, back: np.ndarray, values: tuple)
     return CamGeometry(
         theta, s, s1, s2, s3,
         None, rotate_many(back, contact), contact, contact, m,
-        contact - rho[:, None] * m, None, rho, _pressure(m, way, sense), way,
+        contact - rho[:, None] * m, None, rho, _pressure(m, way, sense), way, m, along,
     )  # fmt: skip
 
 

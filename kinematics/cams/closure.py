@@ -97,7 +97,7 @@ def force_closure(design: CamDesign, samples: int = 360) -> Closure:
         torque,
         stretches(theta, lost),
         _jump_speed(mass, s2, static),
-        max(float(np.max(-mass * s2 * up_to**2 - rate * s - spec.load)), 0.0),
+        max(float(np.max(-mass * s2 * up_to**2 - rate * s - spec.load)), 0.0) + 0.0,
         _rate_needed(mass, s, s2, up_to, preload + spec.load),
         up_to,
         _peak(theta, contact),

@@ -261,8 +261,8 @@ def continuity(program: Program) -> tuple[Join, ...]:
             if abs(left[order] - right[order]) > JUMP_TOLERANCE * scales[order]
         )
         order = min((j[0] for j in jumps), default=4) - 1
-        at = math.degrees(piece.end) % 360.0
-        joins.append(Join(round(at, 9), piece.index, after.index, min(order, 3), jumps))
+        at = round(math.degrees(piece.end), 9) % 360.0
+        joins.append(Join(at, piece.index, after.index, min(order, 3), jumps))
     return tuple(joins)
 
 

@@ -55,8 +55,10 @@ __all__ = [
     "cam_pose",
     "cam_rates",
     "cam_reactions",
+    "contact_at",
     "follower_positions",
     "follower_rates",
+    "sketch_profile",
     "solve_cam_step",
 ]
 
@@ -439,3 +441,20 @@ def solve_cam_step(
     qd[contact.follower], qdd[contact.follower] = follower_rates(
         contact, q[contact.follower], speed, acceleration
     )
+
+
+def sketch_profile(contact: CamContact, samples: int = 240) -> np.ndarray:
+    """The cam's profile as the sketch shows it (world, the cam at its angle ``at``), (k, 2).
+
+    Carried by the cam link, as any of its sketch points: a figure turns it with the cam.
+    """
+    layout = contact.design.layout
+    g = cam_geometry(contact.design, np.arange(samples) * (2.0 * math.pi / samples))
+    # the cam's frame at program angle 0, turned on to the sketch's angle
+    turned = rotate_many(np.full(samples, layout.sense * contact.at), g.profile)
+    return contact.to_world(turned)
+
+
+def contact_at(contact: CamContact, turned: np.ndarray) -> np.ndarray:
+    """The contact point (world) when the cam has turned ``turned`` from the sketch (N, 2)."""
+    return cam_pose(contact, np.atleast_1d(np.asarray(turned, dtype=float))).contact

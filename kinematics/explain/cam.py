@@ -156,6 +156,13 @@ CAM_PHRASES: dict[str, dict[str, str]] = {
             "{follower}; its equations along the face's normal give"
         ),
         "cam_step_law": "The program's law gives the same: s'·θ̇ = {v1}, s''·θ̇² + s'·θ̈ = {a1}.",
+        "cam_f_group": (
+            "Follower {follower} is in equilibrium under its loads, the contact force of cam "
+            "{cam} along the common normal (the virtual link that replaces the contact at this "
+            "pose carries it) and its guide's reaction at {guide}: three equations for the "
+            "contact force's size and the guide's two unknowns (a slide's normal force and "
+            "couple, or a pivot's two components)."
+        ),
     },
     "vi": {
         "cam_title": "Thiết kế cơ cấu cam: {name}",
@@ -269,6 +276,12 @@ CAM_PHRASES: dict[str, dict[str, str]] = {
             "tuyến của đáy được"
         ),
         "cam_step_law": "Quy luật chuyển động cho cùng kết quả: s'·θ̇ = {v1}, s''·θ̇² + s'·θ̈ = {a1}.",
+        "cam_f_group": (
+            "Cần {follower} cân bằng dưới tác dụng của ngoại lực, lực tiếp xúc của cam {cam} theo "
+            "pháp tuyến chung (do khâu ảo thay thế khớp cao tại vị trí này truyền) và phản lực "
+            "của giá tại {guide}: ba phương trình cho độ lớn lực tiếp xúc và hai ẩn của giá "
+            "(lực pháp tuyến và mômen của khớp tịnh tiến, hoặc hai thành phần của khớp quay)."
+        ),
     },
 }
 

@@ -253,3 +253,12 @@ def test_the_translating_follower_is_in_equilibrium() -> None:
     arm = s - x
     np.testing.assert_allclose(couple, -(arm[:, 0] * guide[:, 1] - arm[:, 1] * guide[:, 0]),
                                atol=1e-12)  # fmt: skip
+
+
+def test_exact_values_refuse_a_designed_cam_by_name() -> None:
+    from kinematics.solvers.exact import forces_exact, solve_exact
+
+    plan = make_plan(analyze(cam_mechanism(make_design(_spec(FOLLOWERS[0])))))
+    for solve in (solve_exact, forces_exact):
+        with pytest.raises(MechanismError, match="no exact form here"):
+            solve(plan)

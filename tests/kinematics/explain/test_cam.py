@@ -75,3 +75,21 @@ def test_the_cam_group_of_a_kinematics_solution_matches_the_law() -> None:
     assert found and float(found.group(1)) == pytest.approx(law, rel=1e-5)
     assert f"s'·θ̇ = {law:.6g} m/s" in text
     assert "v_C" not in text.split("2. Group")[0]  # the sketch's centre is no point of the cam
+
+
+def test_the_forces_worked_solution_carries_the_contact_to_the_cam() -> None:
+    """At 60° of the harmonic rise the balancing moment is the camshaft torque T = F_c·s'
+    (power), F_c = m·s''·ω² + k·s + F_0 (the spring is not in the mechanism: F_c = m·s''·ω²)."""
+    from kinematics import solve_forces
+    from kinematics.explain import explain_forces
+
+    design = make_design(cam_spec_from_dict(SPEC))
+    report = analyze(cam_mechanism(design, at_deg=60.0))
+    plan = make_plan(report)
+    text = explain_forces(report, plan, solve_forces(plan))
+    theta = math.radians(60.0)
+    s1, s2 = 0.01 * math.sin(theta), 0.01 * math.cos(theta)
+    torque = 1.0 * s2 * 100.0 * s1
+    assert "Known loads on link 1: R_21" in text
+    found = re.search(r"balancing moment M_cb = (-?[\d.e-]+) N·m", text)
+    assert found and float(found.group(1)) == pytest.approx(torque, rel=1e-5)

@@ -43,7 +43,7 @@ from ..errors import BaseCircleError
 from ..solvers.planar import perpendicular
 from .design import CamDesign
 from .followers import follower_layout
-from .profile import CamGeometry, cam_geometry
+from .profile import CamGeometry, cam_geometry, fit_measures
 from .program import program_values
 
 __all__ = [
@@ -102,43 +102,60 @@ def cam_angles(samples: int) -> np.ndarray:
     return np.arange(samples) * (2.0 * math.pi / samples)
 
 
-def _refine(
-    design: CamDesign, theta: np.ndarray, k: int, value: Callable[[CamGeometry], np.ndarray]
-) -> Extreme:
-    """The largest ``value`` near sample ``k``: three passes of 21 points, each 10 times finer."""
+#: a quantity to make largest over the cycle, read from a geometry
+Measure = Callable[[CamGeometry], np.ndarray]
+
+
+def _slice(g: CamGeometry, part: slice) -> CamGeometry:
+    """The geometry at some of its angles (every array field cut to ``part``)."""
+    cut = {
+        f.name: getattr(g, f.name)[part]
+        for f in dataclasses.fields(g)
+        if isinstance(getattr(g, f.name), np.ndarray)
+    }
+    return dataclasses.replace(g, **cut)
+
+
+def _refined(
+    design: CamDesign, theta: np.ndarray, targets: list[tuple[int, Measure]]
+) -> list[Extreme]:
+    """For each ``(sample k, measure)``, its largest value near sample k, and where.
+
+    Three passes of 21 points around each, each ten times finer than the last;
+    every target's points are found in one geometry per pass (the closed form
+    holds at any angle).
+    """
+    if not targets:
+        return []
     step = 2.0 * math.pi / len(theta)
-    best = float(theta[k])
+    best = [float(theta[k]) for k, _ in targets]
+    width = 21
     for _ in range(3):
-        around = best + np.linspace(-step, step, 21)
-        found = value(cam_geometry(design, around))
-        found = np.where(np.isfinite(found), found, -np.inf)
-        best = float(around[int(np.argmax(found))])
+        around = np.concatenate([b + np.linspace(-step, step, width) for b in best])
+        g = cam_geometry(design, around)
+        for i, (_, measure) in enumerate(targets):
+            found = measure(_slice(g, slice(i * width, (i + 1) * width)))
+            found = np.where(np.isfinite(found), found, -np.inf)
+            best[i] = float(around[i * width + int(np.argmax(found))])
         step /= 10.0
-    g = cam_geometry(design, np.array([best]))
-    return Extreme(float(value(g)[0]), round(math.degrees(best) % 360.0, 6))
+    g = cam_geometry(design, np.array(best))
+    return [
+        Extreme(float(measure(_slice(g, slice(i, i + 1)))[0]), round(math.degrees(b) % 360, 6))
+        for i, ((_, measure), b) in enumerate(zip(targets, best, strict=True))
+    ]
 
 
-def _smallest(
-    design: CamDesign, geometry: CamGeometry, radius: Callable[[CamGeometry], np.ndarray | None]
-) -> tuple[Extreme | None, Extreme | None]:
-    """The smallest convex and concave radius of ``radius`` (as positive numbers) and where."""
-    rho = radius(geometry)
-    if rho is None:
-        return None, None
-    out: list[Extreme | None] = []
-    for sign in (1.0, -1.0):
-        # the smallest |ρ| on one side: the largest of −|ρ| there
-        def side(g: CamGeometry, sign: float = sign) -> np.ndarray:
+def _sides(radius: Callable[[CamGeometry], np.ndarray | None]) -> tuple[Measure, Measure]:
+    """The measures whose largest is the smallest convex, and concave, ``|radius|``."""
+
+    def side(sign: float) -> Measure:
+        def measure(g: CamGeometry) -> np.ndarray:
             r = radius(g)
             return np.where(sign * r > 0, -np.abs(r), -np.inf)
 
-        values = side(geometry)
-        if not np.isfinite(values).any():
-            out.append(None)
-            continue
-        found = _refine(design, geometry.theta, int(np.argmax(values)), side)
-        out.append(Extreme(-found.value, found.at_deg))
-    return out[0], out[1]
+        return measure
+
+    return side(1.0), side(-1.0)
 
 
 def stretches(theta: np.ndarray, flag: np.ndarray) -> tuple[tuple[float, float], ...]:
@@ -182,27 +199,33 @@ def check_cam(design: CamDesign, samples: int = 360) -> CamChecks:
     """The pressure angle, curvature, undercut and face width of ``design`` over a turn."""
     theta = cam_angles(samples)
     g = cam_geometry(design, theta)
-    pressure = _refine(
-        design, theta, int(np.argmax(np.abs(g.pressure))), lambda x: np.abs(x.pressure)
-    )
+    knife = design.spec.follower.contact is FollowerContact.KNIFE
+    measures: dict[str, Measure] = {"pressure": lambda x: np.abs(x.pressure)}
+    if g.pitch_radius is not None:
+        measures["pitch"], measures["pitch_concave"] = _sides(lambda x: x.pitch_radius)
+    if not knife:
+        measures["profile"], measures["profile_concave"] = _sides(lambda x: x.profile_radius)
+    targets, names = [], []
+    for name, measure in measures.items():
+        values = measure(g)
+        if np.isfinite(values).any():
+            targets.append((int(np.argmax(values)), measure))
+            names.append(name)
+    found = dict(zip(names, _refined(design, theta, targets), strict=True))
+    radii = {key: Extreme(-x.value, x.at_deg) for key, x in found.items() if key != "pressure"}
+    if knife:
+        radii["profile"], radii["profile_concave"] = radii.get("pitch"), radii.get("pitch_concave")
+    pressure = found["pressure"]
     signed = cam_geometry(design, np.radians([pressure.at_deg])).pressure[0]
-    pitch = (
-        _smallest(design, g, lambda x: x.pitch_radius)
-        if g.pitch_radius is not None
-        else (None, None)
-    )
-    profile = _smallest(design, g, lambda x: x.profile_radius)
-    if design.spec.follower.contact is FollowerContact.KNIFE:
-        profile = pitch
     flags = _undercut(design, g)
     face = _face(design, g)
     return CamChecks(
         Extreme(math.degrees(signed), pressure.at_deg),
         design.spec.pressure_limit,
-        pitch[0],
-        profile[0],
-        pitch[1],
-        profile[1],
+        radii.get("pitch"),
+        radii.get("profile"),
+        radii.get("pitch_concave"),
+        radii.get("profile_concave"),
         bool(flags.any()),
         stretches(theta, flags),
         face,
@@ -231,40 +254,39 @@ class BaseCircle:
     best_base_radius: float | None = None
 
 
-def _fits(design: CamDesign, base: float, s, limit: float) -> tuple[bool, str]:
-    """Whether the base circle ``base`` meets the pressure limit with no undercut, else why not."""
-    spec = dataclasses.replace(design.spec, base_radius=base)
+def _fits(design: CamDesign, base: float, values: tuple, limit: float) -> tuple[bool, str]:
+    """Whether the base circle ``base`` meets the pressure limit with no undercut, else why not.
+
+    ``values`` are the program's ``s, s', s''`` over the samples (the same for every base).
+    """
     try:
-        layout = follower_layout(spec.follower, base, spec.omega)
+        layout = follower_layout(design.spec.follower, base, design.spec.omega)
     except BaseCircleError:
         return False, "reach"
-    trial = dataclasses.replace(design, spec=spec, layout=layout)
-    g = cam_geometry(trial, s)
-    if not np.all(np.isfinite(g.pressure)) or np.max(np.abs(g.pressure)) > limit:
+    pressure, rho = fit_measures(layout, *values)
+    if not np.all(np.isfinite(pressure)) or np.max(np.abs(pressure)) > limit:
         return False, "pressure angle"
-    if _undercut(trial, g).any():
+    contact = design.spec.follower.contact
+    if contact is FollowerContact.ROLLER and np.any((rho > 0) & (rho <= layout.roller_radius)):
+        return False, "undercut"
+    if contact is FollowerContact.FLAT and np.any(rho <= 0):
         return False, "undercut"
     return True, ""
 
 
-def _bisect(design: CamDesign, theta: np.ndarray, low: float, high: float, limit: float):
+def _bisect(design: CamDesign, values: tuple, low: float, high: float, limit: float):
     """The smallest base radius in (low, high] that fits, by bisection (high must fit)."""
     why = "reach"
     for _ in range(48):
-        if high - low <= 1e-9 * high:
+        if high - low <= 1e-7 * high:
             break
         mid = 0.5 * (low + high)
-        ok, reason = _fits(design, mid, theta, limit)
+        ok, reason = _fits(design, mid, values, limit)
         if ok:
             high = mid
         else:
             low, why = mid, reason
     return high, why
-
-
-def _pressure_height(s: np.ndarray, s1: np.ndarray, offset: np.ndarray, tangent: float):
-    """``d(ε) = max_θ(|s' − ε|/T − s)`` for each offset ε (the follower's height at s = 0)."""
-    return np.max(np.abs(s1[None, :] - offset[:, None]) / tangent - s[None, :], axis=1)
 
 
 def smallest_base_circle(design: CamDesign, samples: int = 360) -> BaseCircle:
@@ -276,12 +298,12 @@ def smallest_base_circle(design: CamDesign, samples: int = 360) -> BaseCircle:
     limit_deg = spec.pressure_limit
     limit = math.radians(limit_deg)
     theta = cam_angles(samples)
-    s, s1, _, _ = program_values(design.program, theta)
+    s, s1, s2, _ = program_values(design.program, theta)
+    values = (s, s1, s2)
     f = spec.follower
     if f.translating and f.contact is not FollowerContact.FLAT:
-        return _translating(design, theta, s, s1, limit, limit_deg)
+        return _translating(design, values, limit, limit_deg)
     if f.translating:
-        _, _, s2, _ = program_values(design.program, theta)
         base = float(np.max(-(s + s2)))
         base = max(base, 0.0) * (1.0 + 1e-9) or float(np.max(np.abs(s))) * 1e-9
         return BaseCircle(base, "undercut", limit_deg)
@@ -289,49 +311,78 @@ def smallest_base_circle(design: CamDesign, samples: int = 360) -> BaseCircle:
     reach = math.hypot(*(f.pivot or (0.0, 0.0)))
     top = reach + f.face_offset if f.contact is FollowerContact.FLAT else reach + (f.arm or 0.0)
     top -= design.layout.roller_radius
-    trials = np.linspace(0.0, top, 65)[1:-1]
+    trials = np.linspace(0.0, top, 17)[1:-1]
+    coarse = tuple(v[::4] for v in values)  # the search on a quarter of the angles first
     why = "reach"
     for k, base in enumerate(trials):
-        ok, reason = _fits(design, float(base), theta, limit)
+        ok, reason = _fits(design, float(base), coarse, limit)
         if ok:
             low = float(trials[k - 1]) if k else 0.0
-            found, bisected = _bisect(design, theta, low, float(base), limit)
-            return BaseCircle(found, bisected if k else why, limit_deg)
+            found, bisected = _bisect(design, coarse, low, float(base), limit)
+            return BaseCircle(_confirmed(design, values, found, limit), bisected, limit_deg)
         why = reason
     return BaseCircle(None, why, limit_deg)
 
 
-def _translating(design: CamDesign, theta, s, s1, limit: float, limit_deg: float) -> BaseCircle:
-    """A translating knife or roller: the pressure bound in closed form, undercut by bisection."""
+def _confirmed(design: CamDesign, values: tuple, base: float, limit: float) -> float:
+    """``base`` checked on every angle, grown a little until it fits there too."""
+    if _fits(design, base, values, limit)[0]:
+        return base
+    grow = 1e-7
+    while not _fits(design, base * (1.0 + grow), values, limit)[0] and grow < 1.0:
+        grow *= 4.0
+    found, _ = _bisect(design, values, base * (1.0 + grow / 4.0), base * (1.0 + grow), limit)
+    return found
+
+
+def _best_offset(a: float, b: float, floor: float, tangent: float) -> float:
+    """The offset that makes ``R_p² = d(ε)² + ε²`` least, ``d(ε) = max(a − ε/T, b + ε/T, floor)``.
+
+    ``d`` is convex and piecewise linear in ε, so ``R_p²`` is convex: its least value is at a
+    stationary point of one of the pieces or at a kink where two meet.
+    """
+    t = tangent
+    candidates = [a * t / (t * t + 1.0), -b * t / (t * t + 1.0), t * (a - b) / 2.0, 0.0]
+    candidates += [t * (a - floor), t * (floor - b)]
+
+    def size(eps: float) -> float:
+        d = max(a - eps / t, b + eps / t, floor)
+        return d * d + eps * eps
+
+    return min(candidates, key=size)
+
+
+def _translating(design: CamDesign, values: tuple, limit: float, limit_deg: float) -> BaseCircle:
+    """A translating knife or roller: the pressure bound in closed form, undercut by bisection.
+
+    With ``T = tan φ_max``, ``|s' − ε|/T − s ≤ d`` at every angle splits into
+    ``d ≥ a − ε/T`` and ``d ≥ b + ε/T`` with ``a = max(s'/T − s)`` and ``b = max(−s'/T − s)``;
+    the follower stays above the cam's centre, ``d > max(−s)``.
+    """
+    s, s1, _ = values
     rf = design.layout.roller_radius
     tangent = math.tan(limit)
-    floor = float(np.max(-s))  # the follower stays above the cam's centre: d + s > 0
+    a = float(np.max(s1 / tangent - s))
+    b = float(np.max(-s1 / tangent - s))
+    floor = float(np.max(-s))
 
     def base_for(offset: float) -> tuple[float, str]:
-        d = max(float(_pressure_height(s, s1, np.array([offset]), tangent)[0]), floor)
+        d = max(a - offset / tangent, b + offset / tangent, floor)
         base = math.hypot(d, offset) - rf
         why = "pressure angle"
         if base <= 0.0:
             base, why = 1e-9 * max(design.program.scale, rf, 1e-300), "reach"
         trial = dataclasses.replace(design.spec.follower, offset=offset)
         moved = dataclasses.replace(design, spec=dataclasses.replace(design.spec, follower=trial))
-        ok, _ = _fits(moved, base * (1.0 + 1e-9), theta, limit)
+        ok, _ = _fits(moved, base * (1.0 + 1e-9), values, limit)
         if ok:
             return base * (1.0 + 1e-9), why
         high = base * 2.0
-        while not _fits(moved, high, theta, limit)[0]:
+        while not _fits(moved, high, values, limit)[0]:
             high *= 2.0
-        return _bisect(moved, theta, base, high, limit)
+        return _bisect(moved, values, base, high, limit)
 
     base, why = base_for(design.spec.follower.offset)
-    # the offset that makes the prime circle smallest: R_p(ε)² = d(ε)² + ε², convex in ε
-    reach = float(np.max(np.abs(s1))) or design.program.scale
-    grid = np.linspace(-reach, reach, 201)
-    for _ in range(3):
-        d = np.maximum(_pressure_height(s, s1, grid, tangent), floor)
-        k = int(np.argmin(d**2 + grid**2))
-        width = grid[1] - grid[0]
-        grid = np.linspace(grid[k] - width, grid[k] + width, 21)
-    best = float(grid[10])
+    best = _best_offset(a, b, floor, tangent)
     best_base, _ = base_for(best)
     return BaseCircle(base, why, limit_deg, best, best_base)

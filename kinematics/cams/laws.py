@@ -155,9 +155,21 @@ _POLY_4567 = np.array([0.0, 0.0, 0.0, 0.0, 35.0, -84.0, 70.0, -20.0])
 
 
 def polynomial_derivatives(coefficients: np.ndarray, x: np.ndarray) -> Values:
-    """``(y, y', y'', y''')`` of the polynomial ``Σ c_k·x^k`` (coefficients from the constant)."""
-    p = np.polynomial.Polynomial(coefficients)
-    return p(x), p.deriv(1)(x), p.deriv(2)(x), p.deriv(3)(x)
+    """``(y, y', y'', y''')`` of the polynomial ``Σ c_k·x^k`` (coefficients from the constant).
+
+    >>> [float(v[0]) for v in polynomial_derivatives(np.array([1.0, 2.0, 3.0]), np.array([2.0]))]
+    [17.0, 14.0, 6.0, 0.0]
+    """
+    c = np.asarray(coefficients, dtype=float)
+    x = np.asarray(x, dtype=float)
+    out = []
+    for _ in range(4):
+        value = np.full(x.shape, c[-1])
+        for coefficient in c[-2::-1]:  # Horner
+            value = value * x + coefficient
+        out.append(value)
+        c = c[1:] * np.arange(1, len(c)) if len(c) > 1 else np.zeros(1)
+    return tuple(out)  # type: ignore[return-value]
 
 
 def _polynomial(coefficients: np.ndarray) -> Callable[[np.ndarray], Values]:

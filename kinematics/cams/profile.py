@@ -35,13 +35,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..solvers.planar import cross, dot, norm, perpendicular, rotate_many
-from .followers import contact_point, face
+from .followers import FollowerLayout, contact_point, face
 from .program import program_values
 
 if TYPE_CHECKING:
     from .design import CamDesign
 
-__all__ = ["CamGeometry", "cam_geometry"]
+__all__ = ["CamGeometry", "cam_geometry", "fit_measures"]
 
 
 @dataclass(frozen=True)
@@ -91,15 +91,13 @@ def cam_geometry(design: CamDesign, theta: np.ndarray) -> CamGeometry:
     s, s1, s2, s3 = program_values(design.program, theta)
     back = -sense * theta  # the fixed frame seen from the cam
     if layout.flat:
-        return _flat(design, theta, back, (s, s1, s2, s3))
-    p, p1, p2, way = contact_point(layout, s, s1, s2)
-    a = p1 - sense * perpendicular(p)
-    b = p2 - 2.0 * sense * perpendicular(p1) - p
-    speed = norm(a)
-    raw = sense * perpendicular(a)
-    normal = raw / speed[:, None]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        rho = -sense * speed**3 / cross(a, b)
+        contact, m, rho, way, along = _flat_core(layout, s, s1, s2)
+        return CamGeometry(
+            theta, s, s1, s2, s3,
+            None, rotate_many(back, contact), contact, contact, m,
+            contact - rho[:, None] * m, None, rho, _pressure(m, way, sense), way, m, along,
+        )  # fmt: skip
+    p, normal, rho, raw, way = _point_core(layout, s, s1, s2)
     rf = layout.roller_radius
     contact = p - rf * normal
     return CamGeometry(
@@ -109,13 +107,42 @@ def cam_geometry(design: CamDesign, theta: np.ndarray) -> CamGeometry:
     )  # fmt: skip
 
 
-def _flat(design: CamDesign, theta: np.ndarray, back: np.ndarray, values: tuple) -> CamGeometry:
-    layout = design.layout
+def fit_measures(
+    layout: FollowerLayout, s: np.ndarray, s1: np.ndarray, s2: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The pressure angle and the radius that decides undercut, from the program's values.
+
+    The radius is the pitch curve's for a roller or knife, the profile's for a
+    flat face. What :func:`cam_geometry` finds, without the cam's own frame:
+    the design in reverse tries many base circles on the same program.
+    """
+    if layout.flat:
+        _, m, rho, way, _ = _flat_core(layout, s, s1, s2)
+        return _pressure(m, way, layout.sense), rho
+    _, normal, rho, _, way = _point_core(layout, s, s1, s2)
+    return _pressure(normal, way, layout.sense), rho
+
+
+def _point_core(layout: FollowerLayout, s, s1, s2) -> tuple:
+    """A roller's or knife's point, unit and raw normal, pitch radius and way (fixed frame)."""
     sense = layout.sense
-    s, s1, s2, s3 = values
+    p, p1, p2, way = contact_point(layout, s, s1, s2)
+    a = p1 - sense * perpendicular(p)
+    b = p2 - 2.0 * sense * perpendicular(p1) - p
+    speed = norm(a)
+    raw = sense * perpendicular(a)
+    normal = raw / speed[:, None]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rho = -sense * speed**3 / cross(a, b)
+    return p, normal, rho, raw, way
+
+
+def _flat_core(layout: FollowerLayout, s, s1, s2) -> tuple:
+    """A flat face's contact, normal, profile radius, way and place along the face."""
+    sense = layout.sense
     alpha, a1, a2, h, h1, h2 = face(layout, s, s1, s2)
     if layout.follower.translating:  # the face's normal is +y, exactly
-        m = np.zeros((len(theta), 2))
+        m = np.zeros((len(s), 2))
         m[:, 1] = 1.0
     else:
         m = np.stack([np.cos(alpha), np.sin(alpha)], axis=1)
@@ -129,11 +156,7 @@ def _flat(design: CamDesign, theta: np.ndarray, back: np.ndarray, values: tuple)
     else:
         arm = contact - np.asarray(layout.pivot)
         way = layout.swing * perpendicular(arm) / norm(arm)[:, None]
-    return CamGeometry(
-        theta, s, s1, s2, s3,
-        None, rotate_many(back, contact), contact, contact, m,
-        contact - rho[:, None] * m, None, rho, _pressure(m, way, sense), way, m, along,
-    )  # fmt: skip
+    return contact, m, rho, way, along
 
 
 def _pressure(normal: np.ndarray, way: np.ndarray, sense: float) -> np.ndarray:

@@ -78,6 +78,8 @@ class Piece:
     base: float
     lift: float
     coefficients: tuple[float, ...] | None = None
+    #: the points of [0, 1] that hold the extremes of the piece's derivatives (found once)
+    extremes: tuple[float, ...] = ()
 
     @property
     def end(self) -> float:
@@ -95,6 +97,8 @@ class Piece:
 
     def candidates(self) -> tuple[float, ...]:
         """Points of [0, 1] holding the extremes of the piece's s', s'' and s'''."""
+        if self.extremes:
+            return self.extremes
         if self.coefficients is not None:
             return polynomial_candidates(np.array(self.coefficients))
         return law_candidates(self.law)
@@ -163,7 +167,12 @@ def make_program(spec: CamSpec) -> Program:
             coefficients = tuple(float(c) for c in fitted)
             base = float(np.polynomial.Polynomial(fitted)(0.0))
         lift = unit(segment.lift)
-        pieces.append(Piece(i, segment.law, start, beta, base, lift, coefficients))
+        extremes = (
+            polynomial_candidates(np.array(coefficients))
+            if coefficients is not None
+            else law_candidates(segment.law)
+        )
+        pieces.append(Piece(i, segment.law, start, beta, base, lift, coefficients, extremes))
         base += lift
         start += beta
     if problems:

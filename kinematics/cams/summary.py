@@ -142,7 +142,7 @@ def _in_time(design: CamDesign, order: int, value: float) -> float:
 
 
 def _listed(values: np.ndarray) -> list[float]:
-    return [float(v) for v in values]
+    return np.asarray(values, dtype=float).tolist()
 
 
 def cam_report_to_dict(report: CamReport) -> dict[str, Any]:
@@ -229,8 +229,8 @@ def cam_report_to_dict(report: CamReport) -> dict[str, Any]:
             }
             for join in report.joins
         ],
-        "profile": [[float(x), float(y)] for x, y in g.profile],
-        "pitch_curve": None if g.pitch is None else [[float(x), float(y)] for x, y in g.pitch],
+        "profile": g.profile.tolist(),
+        "pitch_curve": None if g.pitch is None else g.pitch.tolist(),
         "face": None
         if checks.face is None
         else {"min": checks.face[0], "max": checks.face[1], "width": checks.face_width},

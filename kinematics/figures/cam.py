@@ -49,6 +49,7 @@ def svaj_axes(design: CamDesign, axes: list[Axes], samples: int = 720) -> None:
     """Draw s, v, a, j against the cam angle (degrees) on four ``axes``, joins marked."""
     program = design.program
     theta = np.linspace(0.0, 2.0 * math.pi, samples + 1)
+    theta[-1] = np.nextafter(theta[-1], 0.0)  # the last segment's end, not the first's start
     s, s1, s2, s3 = program_values(program, theta)
     w = abs(design.omega)
     # a swinging follower's values in degrees, as the files give its lifts

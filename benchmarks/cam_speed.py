@@ -50,7 +50,7 @@ from kinematics.solvers.sweep import sweep
 from structure.readwrite.camfile import read_cam_spec
 from structure.report import analyze
 
-FIXTURES = Path(__file__).resolve().parent.parent / "fixtures" / "cams"
+FIXTURES = Path(__file__).resolve().parent.parent / "examples" / "cams"
 GOAL = 0.020  # seconds, every check
 
 

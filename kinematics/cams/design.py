@@ -13,10 +13,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from structure.cams import CamSpec
 
+from ..errors import BaseCircleError
 from .followers import FollowerLayout, follower_layout
-from .program import Program, make_program
+from .program import Program, make_program, program_values
 
 __all__ = ["CamDesign", "make_design"]
 
@@ -59,8 +62,19 @@ def make_design(spec: CamSpec) -> CamDesign:
         A polynomial segment whose conditions do not fix one polynomial.
     BaseCircleError
         The follower cannot touch the base circle (see
-        :func:`~kinematics.cams.followers.follower_layout`).
+        :func:`~kinematics.cams.followers.follower_layout`), or a translating
+        follower's program takes it past the cam's centre.
     """
-    return CamDesign(
-        spec, make_program(spec), follower_layout(spec.follower, spec.base_radius, spec.omega)
-    )
+    program = make_program(spec)
+    layout = follower_layout(spec.follower, spec.base_radius, spec.omega)
+    if spec.follower.translating:
+        # the follower must stay on its side of the cam's centre all round
+        lowest = float(np.min(program_values(program, np.linspace(0, 2 * np.pi, 3601))[0]))
+        height = layout.rise if not layout.flat else layout.base_radius
+        if height + lowest <= 0.0:
+            raise BaseCircleError(
+                f"the program takes the follower {-lowest:g} m below its start, past the cam's "
+                f"centre ({height:g} m away at s = 0): start the program at the follower's lowest "
+                f"point, or make the base circle larger than {-lowest + layout.roller_radius:g} m"
+            )
+    return CamDesign(spec, program, layout)

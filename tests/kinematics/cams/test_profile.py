@@ -233,3 +233,11 @@ def test_a_follower_that_cannot_reach_the_cam_is_a_named_error() -> None:
                  "roller_radius": 0.01})  # fmt: skip
     with pytest.raises(BaseCircleError, match="pivot must be farther"):
         _design({"motion": "oscillating", "contact": "flat", "pivot": [0.01, 0.0]})
+
+
+def test_a_program_that_takes_the_follower_past_the_centre_is_named() -> None:
+    segments = [{"law": "cycloidal", "lift": -0.06, "angle": 180},
+                {"law": "cycloidal", "lift": 0.06, "angle": 180}]  # fmt: skip
+    with pytest.raises(BaseCircleError, match="past the cam's centre"):
+        _design({"motion": "translating", "contact": "roller", "roller_radius": 0.01},
+                segments=segments)  # fmt: skip

@@ -13,8 +13,8 @@ from structure import read_edgelist
 
 from .conftest import ROOT, run
 
-SPEC = ROOT / "fixtures" / "cams" / "offset_roller.json"
-ROCKER = ROOT / "fixtures" / "cams" / "rocker_flat.json"
+SPEC = ROOT / "examples" / "cams" / "offset_roller.json"
+ROCKER = ROOT / "examples" / "cams" / "rocker_flat.json"
 
 
 def _strict(text: str):
@@ -100,7 +100,7 @@ def test_plot_profiles_and_mechanisms_are_written(tmp_path, capsys) -> None:
 
 
 def test_the_shipped_edge_list_runs(capsys) -> None:
-    code, out, err = run(capsys, "sweep", str(ROOT / "fixtures" / "cams" / "offset_roller.edges"))
+    code, out, err = run(capsys, "sweep", str(ROOT / "examples" / "cams" / "offset_roller.edges"))
     assert code == 0, err
     assert "balancing moment 1" in out
 

@@ -14,7 +14,7 @@ from structure import read_edgelist
 
 from .conftest import FIXTURES
 
-EDGES = FIXTURES / "cams" / "offset_roller.edges"
+EDGES = FIXTURES.parent / "examples" / "cams" / "offset_roller.edges"
 
 
 @pytest.mark.parametrize("lang", ["en", "vi"])

@@ -142,7 +142,7 @@ _VALUES = st.recursive(
 )  # fmt: skip
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(
     st.dictionaries(
         st.sampled_from(["omega", "follower", "base_radius", "segments", "spring", "load",

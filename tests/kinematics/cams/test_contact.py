@@ -262,3 +262,31 @@ def test_exact_values_refuse_a_designed_cam_by_name() -> None:
     for solve in (solve_exact, forces_exact):
         with pytest.raises(MechanismError, match="no exact form here"):
             solve(plan)
+
+
+def test_the_follower_drives_the_rest_of_the_mechanism() -> None:
+    """A rocker hung on the follower (a dyad II(4,5) after the cam's): its links keep their
+    lengths over the cycle, and its point's velocity is the derivative of its path (central
+    differences over the sweep: an independent check of the rates passed on)."""
+    from structure import Mechanism
+    from structure.model import make_pair, make_point
+
+    design = make_design(_spec(FOLLOWERS[0]))
+    m = cam_mechanism(design)
+    extra = [make_pair(5, "R", "2", "4", "G"), make_pair(6, "R", "4", "5", "H"),
+             make_pair(7, "R", "5", "0", "I")]  # fmt: skip
+    points = dict(m.points)
+    for name, xy in (("G", (0.005, 0.09)), ("H", (0.06, 0.11)), ("I", (0.09, 0.05))):
+        points[name] = make_point(name, *xy)
+    bigger = Mechanism(m.pairs + tuple(extra), m.ground, m.drivers, points, m.name, m.source,
+                       m.loads, m.cams)  # fmt: skip
+    plan = make_plan(analyze(bigger))
+    assert [s.label for s in plan.steps] == ["II(2,v1)", "II(4,5)"]
+    result = sweep(plan, steps=720)
+    g, h = result.points["G"]["position"], result.points["H"]["position"]
+    np.testing.assert_allclose(np.hypot(*(h - g).T), math.hypot(0.055, 0.02), rtol=1e-12)
+    i = np.array([0.09, 0.05])
+    np.testing.assert_allclose(np.hypot(*(h - i).T), math.hypot(0.03, 0.06), rtol=1e-12)
+    dt = 2 * math.pi / 720 / 10.0
+    velocity = (np.roll(h, -1, axis=0) - np.roll(h, 1, axis=0)) / (2 * dt)
+    np.testing.assert_allclose(velocity, result.points["H"]["velocity"], atol=2e-4)

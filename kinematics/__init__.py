@@ -70,6 +70,19 @@ _PUBLIC_BY_MODULE = {
         "train_losses",
     ),
     "explain": ("explain_forces", "explain_kinematics"),
+    "cams": (
+        "CamDesign",
+        "CamReport",
+        "cam_geometry",
+        "cam_mechanism",
+        "cam_report",
+        "cam_report_to_dict",
+        "check_cam",
+        "force_closure",
+        "make_design",
+        "smallest_base_circle",
+        "write_profile",
+    ),
 }
 _PUBLIC = {name: module for module, names in _PUBLIC_BY_MODULE.items() for name in names}
 

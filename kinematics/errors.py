@@ -33,10 +33,13 @@ from structure.errors import MechanismError
 __all__ = [
     "DEAD_CENTRE",
     "AssemblyError",
+    "BaseCircleError",
     "BranchChangeError",
+    "CamGeometryError",
     "IndeterminateError",
     "SingularPoseError",
     "SweepSizeError",
+    "UndercutError",
     "inputs_text",
 ]
 
@@ -157,3 +160,16 @@ class IndeterminateError(MechanismError):
 
 class SweepSizeError(MechanismError):
     """A sweep asks for more poses than fit in the memory a sweep may take."""
+
+
+class CamGeometryError(MechanismError, ValueError):
+    """A cam design whose geometry cannot be made, or a sketch that disagrees with it."""
+
+
+class BaseCircleError(CamGeometryError):
+    """The base circle too small (the follower too far) for any profile: says what to change."""
+
+
+class UndercutError(CamGeometryError):
+    """The profile loops or has a cusp (a roller too large for the pitch curve's convex radius,
+    a flat face on a profile of negative radius): it cannot be cut or followed."""

@@ -13,6 +13,7 @@ order) -> the solvers of the ``kinematics`` package.
 """
 
 from .assur import *  # noqa: F403
+from .cams import *  # noqa: F403
 from .deprecation import alias_moved_modules
 from .errors import *  # noqa: F403
 from .generators import *  # noqa: F403

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 __all__ = [
     "QUOTE_WIDTH",
     "REASON_WIDTH",
+    "CamProgramError",
     "DecompositionError",
     "EdgeListError",
     "EdgeListProblem",
@@ -88,6 +89,16 @@ class EdgeListError(MechanismError, ValueError):
         if hidden:
             shown.append(f"{self.source}: ... and {hidden} more problems")
         return "\n".join(shown)
+
+
+class CamProgramError(EdgeListError):
+    """A cam design that cannot be read: its spec or its follower program is wrong.
+
+    The segments do not add up to 360°, the program does not bring the
+    follower home, a law is unknown, a polynomial's conditions do not fix it,
+    a value is out of its range; each problem under its JSON path, saying what
+    to change (see :mod:`structure.cams`).
+    """
 
 
 class StatementError(MechanismError, ValueError):

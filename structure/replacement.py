@@ -98,7 +98,8 @@ def replace_higher_pairs(
         next_id += 2
         new_pairs.extend(made)
         records.append(Replacement(v, p, made, rollers.get(p.id)))
-    replaced = mechanism.evolve(pairs=tuple(kept + new_pairs))
+    # a cam's profile belongs to its higher pair, which the replaced mechanism has not
+    replaced = mechanism.evolve(pairs=tuple(kept + new_pairs), cams=())
     return validated(replaced), tuple(records)
 
 

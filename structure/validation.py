@@ -45,6 +45,7 @@ from .kinds import LoadKind, PairKind
 from .utils import UnionFind, count_components
 
 if TYPE_CHECKING:  # the model builds on these checks: only its types are needed here
+    from .cams import CamRef
     from .model import Mechanism
 
 __all__ = [
@@ -366,6 +367,7 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
         *_driver_problems(m),
         *_load_problems(m),
         *_point_problems(m),
+        *_cam_problems(m),
     ]
     if problems:
         # file order; problems of the whole file (line 0) last
@@ -488,6 +490,60 @@ def _point_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
 
 
 # ----------------------------------------------------------------------------- results
+def _cam_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
+    """Each ``cam`` statement names a higher pair whose cam turns about the ground, and a
+    follower that moves as its program says (slides or swings on the ground, with the contact
+    its spec names)."""
+    seen: set[frozenset[str]] = set()
+    for ref in m.cams:
+        reason = _cam_reason(m, ref)
+        key = frozenset((ref.cam, ref.other))
+        if reason is None and key in seen:
+            reason = f"a second cam statement for the pair {ref.cam}–{ref.other}"
+        seen.add(key)
+        if reason is not None:
+            yield EdgeListProblem(ref.line_no, ref.statement, reason)
+
+
+def _cam_reason(m: Mechanism, ref: CamRef) -> str | None:
+    """Why a ``cam`` statement does not fit the mechanism, or None."""
+    for link in (ref.cam, ref.other):
+        if not m.has_link(link):
+            return f"link {link} is not a link of the mechanism"
+    contacts = [
+        p for p in m.pairs_of(ref.cam) if p.kind is PairKind.H and p.other(ref.cam) == ref.other
+    ]
+    if len(contacts) != 1 or contacts[0].gear:
+        return (
+            f"the cam statement needs one higher pair (not a gear mesh) between {ref.cam} and "
+            f"{ref.other}: {len(contacts)} found"
+        )
+    pair = contacts[0]
+    joint = m.ground_joint(ref.cam)
+    if joint is None or joint.kind is not PairKind.R:
+        return f"cam {ref.cam} must turn about a pivot on the ground ({m.ground})"
+    contact = ref.spec.follower.contact.value
+    follower = ref.other
+    if contact == "roller":
+        if pair.roller != ref.other:
+            return f"the spec has a roller: the pair needs roller={ref.other}"
+        pins = [p for p in m.pairs_of(ref.other) if p.id != pair.id and p.kind is PairKind.R]
+        if len(pins) != 1:
+            return f"roller {ref.other} must be pinned to its follower by one R pair"
+        follower = pins[0].other(ref.other)
+    elif contact == "flat" and pair.flat != ref.other:
+        return f"the spec has a flat-faced follower: the pair needs flat={ref.other}"
+    elif contact == "knife" and (pair.flat is not None or pair.roller is not None):
+        return "the spec has a knife-edge follower: the pair takes neither flat= nor roller="
+    joint = m.ground_joint(follower)
+    wanted = PairKind.P if ref.spec.follower.translating else PairKind.R
+    if joint is None or joint.kind is not wanted or follower in m.driver_links:
+        how = "slide on" if wanted is PairKind.P else "swing about a pivot on"
+        motion = ref.spec.follower.motion.value
+        return f"the {motion} follower {follower} must {how} the ground ({m.ground}), undriven"
+    return None
+
+
 def _non_finite(data: object, path: str = "") -> str | None:
     """The path (``reactions[0].force[1]``) of the first NaN or infinity in ``data``, or None."""
     if isinstance(data, float):

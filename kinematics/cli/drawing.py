@@ -13,12 +13,14 @@ from structure.errors import MechanismError
 
 from .. import figures
 from ..figures.animation import animate, turn_inputs
+from ..figures.cam import cam_sheet
 from ..solvers.plan import make_plan
 from ..solvers.solve import solve_pose
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.report import StructuralReport
 
+    from ..cams.design import CamDesign
     from ..kinetostatics.forces import ForceSolution
     from ..solvers.plan import SolvePlan
     from ..solvers.solve import KinematicState
@@ -26,6 +28,7 @@ if TYPE_CHECKING:  # pragma: no cover - annotations only
 
 __all__ = [
     "animate",
+    "save_cam_sheet",
     "save_forces_sheet",
     "save_kinematics_sheet",
     "save_mechanism_drawing",
@@ -43,6 +46,11 @@ def _save(path: str, draw: Callable[[], object]) -> None:
         raise MechanismError(str(exc)) from exc
     except OSError as exc:
         raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
+
+
+def save_cam_sheet(design: CamDesign, path: str, samples: int = 720) -> None:
+    """A cam design's SVAJ diagrams beside its profile."""
+    _save(path, lambda: cam_sheet(design, samples))
 
 
 def save_structure_sheet(report: StructuralReport, path: str) -> None:

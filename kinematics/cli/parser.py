@@ -292,6 +292,43 @@ def _atlas_arguments(parser: argparse.ArgumentParser) -> None:
     add_run_options(parser, TABLE_FORMATS, "jsonl")
 
 
+def _cam_arguments(command: argparse.ArgumentParser) -> None:
+    """``cam SPEC [--json] [--plot OUT] [--profile OUT]... [-o OUT] [--samples N] [--explain]``."""
+    command.add_argument(
+        "file", metavar="SPEC", help="cam design: follower, base circle, program (JSON)"
+    )
+    _add_json(command)
+    _add_plot(command, "draw the SVAJ diagrams beside the profile")
+    command.add_argument(
+        "--profile",
+        action="append",
+        metavar="OUT",
+        help="write the profile: .dxf (a polyline on its own layer), .svg or .csv (repeat)",
+    )
+    command.add_argument(
+        "-o",
+        "--output",
+        metavar="OUT",
+        help="write the cam as a mechanism for the other commands: .json (the program inline) "
+        "or .edges (the program beside it, OUT's name with .cam.json)",
+    )
+    command.add_argument(
+        "--at",
+        type=float,
+        default=0.0,
+        metavar="DEG",
+        help="with -o: the program's angle the mechanism's sketch shows (default 0)",
+    )
+    command.add_argument(
+        "--samples",
+        type=int,
+        default=360,
+        metavar="N",
+        help="cam angles the checks look at over a turn (default 360; extremes are refined)",
+    )
+    _add_explain(command)
+
+
 def _report_arguments(command: argparse.ArgumentParser) -> None:
     """``report FILE [-o OUT] [--lang en|vi] [--steps N]``."""
     _add_file(command, "edge-list file (coordinates, loads and gears where it has them)")
@@ -337,6 +374,12 @@ COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...]
         "atlas",
         "every kinematic chain of N links and F DOF, every mechanism of it classified",
         _atlas_arguments,
+    ),
+    (
+        "cam",
+        "a disc cam from its follower's motion: SVAJ, profile, pressure angle, curvature, "
+        "undercut, force closure; DXF/SVG/CSV, and the mechanism",
+        _cam_arguments,
     ),
     (
         "report",

@@ -137,10 +137,13 @@ class SolutionContext:
     def points_of(self, link: str) -> list[str]:
         """Named points fixed to ``link``: its pairs' points and its markers."""
         out: list[str] = []
+        # a designed cam's centre of curvature at the sketch is no point of the cam elsewhere
+        hidden = {cam.pair.center_of(cam.cam) for cam in self.plan.cams}
         for p in self.mechanism.pairs_of(link):
             if (
                 p.point
                 and p.kind is not PairKind.H
+                and p.point not in hidden
                 and self.mechanism.coordinates(p.point) is not None
             ):
                 out.append(p.point)

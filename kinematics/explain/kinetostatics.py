@@ -46,10 +46,12 @@ from structure.explain.document import (
 from structure.model import Load, PairKind
 from structure.report import StructuralReport
 
+from ..cams.contact import contact_at
 from ..kinetostatics.forces import ForceSolution, Reaction
 from ..kinetostatics.polygons import Dyad, dyad_of, link_rates, point_at
 from ..solvers.plan import DriverStep, GroupStep, SolvePlan
 from ..solvers.solve import KinematicState, solve_pose
+from .cam import CAM_PHRASES
 from .context import NamedPoint, SolutionContext, cross, turned_left, turning_rates, vector_length
 from .notation import (
     POWER_EQUATION,
@@ -179,8 +181,16 @@ def _reaction_between(
 
 
 def _acts_at(ctx: SolutionContext, r: Reaction) -> NamedPoint:
-    """Where a reaction acts: its pin, or for a slide its point on ``links[1]``."""
+    """Where a reaction acts: its pin, or for a slide its point on ``links[1]``.
+
+    A designed cam's contact force acts where the contact is at the pose (on its profile).
+    """
     name = r.point or ""
+    cam = next((c for c in ctx.plan.cams if r.kind == "H" and set(r.links) == {c.cam, c.follower}),
+               None)  # fmt: skip
+    if cam is not None:
+        turned = ctx.state.links[cam.cam].angle if cam.cam in ctx.state.links else 0.0
+        return NamedPoint(name, contact_at(cam, np.array([turned]))[0])
     if r.kind == "P" and ctx.mechanism.coordinates(name) is not None:
         return ctx.slide_point(name, r.links[1])
     named = ctx.state.points.get(name)
@@ -192,8 +202,10 @@ def _carried_reactions(
 ) -> list[_KnownLoad]:
     """The reactions of the groups already solved (farther out) on ``link``."""
     out = []
+    designed = {frozenset((c.cam, c.follower)) for c in ctx.plan.cams}
     for r in solution.reactions:
-        if r.kind not in ("R", "P") or link not in r.links:
+        contact = r.kind == "H" and frozenset(r.links) in designed  # a designed cam's force
+        if (r.kind not in ("R", "P") and not contact) or link not in r.links:
             continue
         other = r.links[0] if r.links[1] == link else r.links[1]
         if other not in farther:
@@ -517,6 +529,18 @@ def _group_forces(
     }
     for link in step.links:
         _known_loads(ctx, link, loads[link])
+    if step.cam is not None:  # a designed cam's follower: the contact's replacement at the pose
+        cam = step.cam
+        doc.para(
+            *Doc(CAM_PHRASES, doc.lang).say(
+                "cam_f_group", follower=cam.follower, cam=cam.cam, guide=cam.guide.point or "?"
+            )
+        )
+        doc.para(doc.word("f_found"))
+        guide = cam.guide
+        _show_reaction(ctx, solution, guide.a, guide.b, guide.point or "", guide.kind.value)
+        _show_reaction(ctx, solution, cam.cam, cam.follower, cam.contact_point or "", "H")
+        return
     pairs = list(g.pairs) if g is not None else []
     listing = _comma_separated(
         [reaction_symbol(p.links[1], p.links[0]), f" ({p.point})"] for p in pairs

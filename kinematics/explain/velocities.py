@@ -48,6 +48,7 @@ from ..kinetostatics.polygons import (
 )
 from ..solvers.plan import GroupStep, SolvePlan
 from ..solvers.solve import KinematicState
+from .cam import explain_cam_step
 from .context import SolutionContext, turning_rates, vector_length
 from .notation import (
     ZERO,
@@ -499,7 +500,9 @@ def explain_kinematics(
         doc.heading(
             *doc.say("group_head", k=k, label=step.label, kind=kind, links=", ".join(step.links))
         )
-        if step.label in dyads:
+        if step.cam is not None:  # a designed cam: its follower moves by the program
+            explain_cam_step(ctx, step)
+        elif step.label in dyads:
             _explain_dyad(ctx, step, dyads[step.label])
         else:
             _explain_whole(ctx, step)

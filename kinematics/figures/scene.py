@@ -36,6 +36,7 @@ from matplotlib.patches import Arc, Circle, FancyArrowPatch, Polygon
 from structure.model import Pair, PairKind
 from structure.report import StructuralReport
 
+from ..cams.contact import contact_at, sketch_profile
 from ..solvers.plan import SolvePlan
 from .style import (
     DRIVER_COLOUR,
@@ -301,7 +302,8 @@ def draw_scene(
     virtual = virtual_links(report)
     bodies = {link: _link_points(plan, link, virtual) for link in m.moving_links}
     size = _scene_size(plan, bodies, poses)
-    profiles = _profiles(report, size)
+    designed = {(c.pair.id, c.cam) for c in plan.cams}  # drawn from their programs below
+    profiles = [p for p in _profiles(report, size) if (p.pair.id, p.link) not in designed]
     for prof in profiles:
         if prof.kind == "flat" and prof.link in bodies and prof.pair.point:
             bodies[prof.link].setdefault(prof.pair.point, prof.centre)
@@ -309,6 +311,7 @@ def draw_scene(
     style = _SceneStyle(colour, m.ground, virtual, size)
     _draw_links(ax, scene, bodies, style)
     _draw_profiles(ax, scene, profiles, style)
+    _draw_cams(ax, scene, plan, style)
     _draw_contacts(ax, scene, report, plan, style)
     _draw_sliders(ax, scene, plan, style)
     _draw_pins(ax, scene, report, plan, style)
@@ -375,13 +378,39 @@ def _draw_profiles(ax: Axes, scene: Scene, profiles: list[_Profile], style: _Sce
             scene.follow(_mover_text(label, prof.carrier, prof.centre, prof.radius * 0.75), label)
 
 
+def _draw_cams(ax: Axes, scene: Scene, plan: SolvePlan, style: _SceneStyle) -> None:
+    """Each designed cam's profile (gid ``profile:<pair id>:<cam>``), turning with the cam, and
+    its contact (gid ``contact:<point>``), which runs along the profile as it turns."""
+    for cam in plan.cams:
+        outline = sketch_profile(cam)
+        c = style.tint(cam.cam)
+        patch = Polygon(
+            outline, closed=True, facecolor=to_rgba(c, 0.08), edgecolor=c, lw=1.8,
+            gid=f"profile:{cam.pair.id}:{cam.cam}", zorder=3,
+        )  # fmt: skip
+        ax.add_patch(patch)
+        dot = Line2D([], [], marker="o", ms=4, color="black", ls="none",
+                     gid=f"contact:{cam.contact_point}", zorder=7)  # fmt: skip
+        ax.add_line(dot)
+        scene.anchors.append((cam.cam, outline))
+
+        def move(poses: Poses, cam=cam, outline=outline, patch=patch, dot=dot) -> None:
+            patch.set_xy(place(poses, cam.cam, outline))
+            turned = float(poses[cam.cam][2]) if cam.cam in poses else 0.0
+            k = contact_at(cam, np.array([turned]))[0]
+            dot.set_data([k[0]], [k[1]])
+
+        scene.follow(move, patch, dot)
+
+
 def _draw_contacts(
     ax: Axes, scene: Scene, report: StructuralReport, plan: SolvePlan, style: _SceneStyle
 ) -> None:
     """The contact point of each higher pair: a dot, and its name unless a plan point has it."""
+    designed = {c.pair.id for c in plan.cams}
     for r in report.replacements:
         k = point_xy(report.mechanism, r.pair.point)
-        if k is None:
+        if k is None or r.pair.id in designed:  # a designed cam's contact moves on its profile
             continue
         # a gear mesh's contact stays at the pitch point as the gears roll
         carrier = style.ground if r.pair.gear else _contact_carrier(plan, r.pair)

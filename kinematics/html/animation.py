@@ -23,6 +23,7 @@ from matplotlib.colors import to_hex
 from structure.model import Pair, PairKind
 from structure.report import StructuralReport
 
+from ..cams.contact import sketch_profile
 from ..figures.style import OTHER_COLOUR, palette, virtual_links
 from ..solvers.plan import SolvePlan
 from .cycle import Cycle, inputs_text
@@ -75,7 +76,12 @@ def _bodies(report: StructuralReport, plan: SolvePlan, reach: float) -> list[_Bo
     colour, _ = palette(report)
     virtual = virtual_links(report)
     out = []
+    profiled = {cam.cam: cam for cam in plan.cams}
     for link in m.moving_links:
+        if link in profiled:  # a designed cam: its profile, turning with it
+            outline = sketch_profile(profiled[link], 120)
+            out.append(_Body(link, outline, to_hex(colour.get(link, OTHER_COLOUR)), True, False))
+            continue
         named: dict[str, np.ndarray] = {}
         for pair in m.pairs_of(link):
             if pair.kind is PairKind.P and link not in virtual and pair.other(link) in virtual:
@@ -96,6 +102,14 @@ def _bodies(report: StructuralReport, plan: SolvePlan, reach: float) -> list[_Bo
         ordered = np.array(_ring_order(points) if ring else points)
         hexed = to_hex(colour.get(link, OTHER_COLOUR))
         out.append(_Body(link, ordered, hexed, ring, link in virtual))
+    for cam in plan.cams:  # its roller, carried by the follower (the roller's spin is idle)
+        radius = cam.design.layout.roller_radius
+        axis = _sketch_xy(plan, cam.pair.center_of(cam.other)) if radius else None
+        if axis is not None:
+            turn = np.linspace(0.0, 2.0 * math.pi, 36, endpoint=False)
+            ring = axis + radius * np.stack([np.cos(turn), np.sin(turn)], axis=1)
+            out.append(_Body(cam.follower, ring, to_hex(colour.get(cam.follower, OTHER_COLOUR)),
+                             True, False))  # fmt: skip
     return out
 
 

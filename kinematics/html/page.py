@@ -22,6 +22,7 @@ from structure.explain import LANGUAGES, explain_structure
 from ..explain import explain_forces, explain_kinematics
 from ..figures import sweep_figure
 from .animation import animation_html
+from .camdesign import cams_html
 from .contents import ReportContents, part_note
 from .cycle import inputs_text
 from .gearing import gears_html
@@ -109,6 +110,7 @@ SECTIONS: tuple[tuple[str, str, Callable[[ReportContents, str], str]], ...] = (
     ("cycle", "s_cycle", _cycle_html),
     ("gears", "s_gears", _gears_section),
     ("worked", "s_worked", _worked_html),
+    ("cams", "s_cams", cams_html),
 )
 
 

@@ -39,6 +39,7 @@ import numpy as np
 from structure.errors import MechanismError
 from structure.model import Load, Mechanism, PairKind
 
+from ..cams.contact import cam_pose, cam_reactions
 from ..errors import IndeterminateError
 from ..results.state import Motion
 from ..solvers.equations import Equation, equation_point, evaluate, slide_equations
@@ -489,6 +490,8 @@ def _group_reactions(
     (farther from the drivers) pass on; the group's reactions on its known
     links are added to ``carried`` for the groups solved after it.
     """
+    if step.cam is not None:
+        return _cam_step_reactions(step, where, applied, carried, m)
     closed = _closed_dyad(step, where, applied, carried, m)
     if closed is not None:
         return closed
@@ -520,6 +523,40 @@ def _group_reactions(
             if link not in index:
                 carried[link] = carried.get(link, zero3) + np.einsum("nij,ni->nj", part, value)
     return _reactions(parts, lam, m)
+
+
+def _cam_step_reactions(
+    step: GroupStep,
+    where: _Where,
+    applied: Mapping[str, np.ndarray],
+    carried: dict,
+    m: Mechanism,
+) -> list:
+    """A designed cam's follower: the contact force along the common normal at the pose (the
+    replacement rebuilt there) and its guide's or pivot's reaction; the cam takes the first."""
+    cam = step.cam
+    n = where.motion.inputs.shape[0]
+    pose = cam_pose(cam, where.motion.q[cam.cam][:, 2])
+    point = pose.contact if cam.design.layout.flat else pose.point
+    px, py = point[:, 0], point[:, 1]
+    total = _total(applied.get(cam.follower), carried.get(cam.follower), n)
+    guide = cam.guide
+    # a slide's force acts through its point as fixed to links[1]; a pivot's at the pivot
+    on = guide.b if guide.kind is PairKind.P else m.ground
+    sx, sy = where.position(on, np.asarray(m.coordinates(guide.point) or (0.0, 0.0), float))
+    at = np.empty((n, 2))
+    at[:, 0], at[:, 1] = sx, sy
+    load = _load_about(where, cam.follower, total, px, py)
+    push, force, couple, on_cam = cam_reactions(cam, pose, load, at)
+    # the cam takes −push through the contact: carried as that force at its centre and the
+    # contact's moment about it (exactly 0 where the normal passes through the centre)
+    ox, oy = float(cam.origin[0]), float(cam.origin[1])
+    _carry(where, carried, cam.cam, push[:, 0], push[:, 1], ox, oy, on_cam)
+    sign = 1.0 if guide.b == cam.follower else -1.0
+    return [
+        (cam.contact_point, (cam.cam, cam.follower), "H", push, np.zeros(n)),
+        (guide.point, (guide.a, guide.b), guide.kind.value, sign * force, sign * couple),
+    ]
 
 
 @dataclass(frozen=True)

@@ -126,11 +126,27 @@ def _bias(kind: str, c: sympy.Matrix, n, va: sympy.Matrix, vb: sympy.Matrix) -> 
     return sympy.Matrix([2 * wa * (_perp(n).T * d_dot)[0] + (n.T * (-(wb**2) * c + wa**2 * c))[0]])
 
 
+def _no_designed_cam(plan: SolvePlan) -> None:
+    """Refuse a designed cam by name: its motion has no exact form here."""
+    if plan.cams:
+        raise MechanismError(
+            f"{plan.cams[0].label} has the profile of its program: its curvature and motion are "
+            "computed in floating point, with no exact form here; solve without --exact"
+        )
+
+
 def solve_exact(plan: SolvePlan, symbolic: bool = False) -> ExactState:
     """Exact ω, ε of every link and v, a of every named point at the sketch pose.
 
     ``symbolic`` keeps each driver's speed and acceleration as symbols.
+
+    Raises
+    ------
+    MechanismError
+        The mechanism has a designed cam (a ``cam`` statement): its profile
+        comes from its program in floating point, with no exact form here.
     """
+    _no_designed_cam(plan)
     m = plan.mechanism
     zero = sympy.zeros(3, 1)
     qd: dict[str, sympy.Matrix] = {m.ground: zero}
@@ -282,6 +298,7 @@ def forces_exact(plan: SolvePlan) -> ExactForces:
         A redundant link: the reactions are indeterminate; or a pair with
         friction, which the exact solution does not take.
     """
+    _no_designed_cam(plan)
     if any(s.group is None for s in plan.steps):
         raise IndeterminateError("the mechanism is over-constrained: reactions are indeterminate")
     m = plan.mechanism

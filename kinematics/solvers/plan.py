@@ -27,6 +27,7 @@ from structure.meshes import meshes
 from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
+from ..cams.contact import CamContact, cam_contacts
 from .equations import Equation, slide_equations
 from .planar import unit_from_degrees
 
@@ -61,6 +62,7 @@ class GroupStep:
     equations: tuple[Equation, ...]
     redundant_link: str = ""
     unknowns: tuple[str, ...] = ()  # the links solved, when not the group's (rolling gears)
+    cam: CamContact | None = None  # a designed cam's follower, placed by its program
 
     @property
     def links(self) -> tuple[str, ...]:
@@ -99,6 +101,7 @@ class SolvePlan:
     higher_pairs: tuple[str, ...] = ()
     contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
     rolling: tuple[GroupStep, ...] | None = None
+    cams: tuple[CamContact, ...] = ()  # the cams with a profile: their replacement is per pose
 
     @property
     def driver_kinds(self) -> tuple[str, ...]:
@@ -142,7 +145,8 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     drivers = tuple(
         _driver_step(m, link, motion.get(link, {}), problems) for link in report.drivers
     )
-    steps = [GroupStep(group, _group_equations(m, group, problems)) for group in report.groups]
+    cams = cam_contacts(report.mechanism, report.replacements) if report.mechanism.cams else ()
+    steps = [_step(m, group, cams, problems) for group in report.groups]
     steps += [
         GroupStep(None, _redundant_equations(m, link, problems), link)
         for link in report.decomposition.removed_links
@@ -150,17 +154,48 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     if problems:
         raise EdgeListError(m.source, problems)
     _check_flip(steps, flip)
+    profiled = {c.virtual for c in cams}
     return SolvePlan(
         m,
         drivers,
         tuple(steps),
-        MappingProxyType(_points(m)),
+        MappingProxyType(_cam_points(_points(m), cams)),
         _sketch_size(m),
         frozenset(flip),
-        tuple(r.pair.label for r in report.replacements),
+        tuple(r.pair.label for r in report.replacements if r.virtual_link not in profiled),
         _contacts(report),
-        _rolling_steps(report, steps) if report.replacements else None,
+        _rolling_steps(report, steps, profiled) if report.replacements else None,
+        cams,
     )
+
+
+def _step(m: Mechanism, group: AssurGroup, cams: tuple, problems: list) -> GroupStep:
+    """A group's step; the group of a designed cam's virtual link is its follower's step."""
+    cam = next((c for c in cams if c.virtual in group.links), None)
+    if cam is None:
+        return GroupStep(group, _group_equations(m, group, problems))
+    if set(group.links) != {cam.virtual, cam.follower}:
+        raise MechanismError(
+            f"{cam.label}: the follower {cam.follower} must form a dyad with the cam's virtual "
+            f"link (it is in group {group.label}): join it to the ground only by its guide or "
+            "pivot, and drive the rest of the mechanism from it"
+        )
+    return GroupStep(group, (), unknowns=(cam.follower,), cam=cam)
+
+
+def _cam_points(
+    points: dict[str, tuple[str, np.ndarray]], cams: tuple
+) -> dict[str, tuple[str, np.ndarray]]:
+    """The points of a designed cam's replacement: the follower's pin stays on the follower;
+    the centre of curvature at the sketch is no point of any link over a cycle."""
+    for cam in cams:
+        for name, (link, xy) in list(points.items()):
+            if link == cam.virtual:
+                points[name] = (cam.follower, xy)
+        for name in (cam.pair.center_of(cam.cam),):
+            if name is not None:
+                points.pop(name, None)
+    return points
 
 
 def _driver_step(
@@ -269,7 +304,7 @@ def _contacts(report: StructuralReport) -> tuple[tuple[str, str, str, str | None
 
 
 def _rolling_steps(
-    report: StructuralReport, steps: list[GroupStep]
+    report: StructuralReport, steps: list[GroupStep], profiled: set[str] = frozenset()
 ) -> tuple[GroupStep, ...] | None:
     """The steps with each gear mesh's virtual link replaced by its rolling constraint.
 
@@ -281,6 +316,8 @@ def _rolling_steps(
         return None
     rolls: dict[str, Equation] = {}
     for r in report.replacements:
+        if r.virtual_link in profiled:  # a designed cam: its step follows its program
+            continue
         mesh = found.get(r.pair.id)
         if mesh is None or mesh.za is None or mesh.zb is None:
             return None

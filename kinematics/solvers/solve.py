@@ -39,6 +39,7 @@ import numpy as np
 
 from structure.errors import MechanismError
 
+from ..cams.contact import solve_cam_step
 from ..errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from ..results.state import KinematicState, LinkState, Motion, PointState
 from . import branches, dyads, triads
@@ -123,8 +124,10 @@ def solve_poses(
     SingularPoseError
         A group is at a dead centre (or another singular pose) at some input.
     MechanismError
-        Inputs away from the sketch for a mechanism with a cam (its replacement
-        is instantaneous); gear meshes roll (``plan.rolling``).
+        Inputs away from the sketch for a mechanism with a cam without a profile
+        (its replacement is instantaneous); gear meshes roll (``plan.rolling``);
+        a cam with a profile (a ``cam`` statement) moves its follower by its
+        program, the replacement rebuilt at every pose.
     """
     inputs = np.atleast_2d(np.asarray(inputs, dtype=float))
     if inputs.shape[1] != len(plan.drivers):
@@ -135,8 +138,9 @@ def solve_poses(
                 "the higher pair(s) "
                 + ", ".join(plan.higher_pairs)
                 + " are replaced by virtual links that hold at the sketch pose only; away "
-                "from the sketch a cam needs its profile, which the format does not hold (a "
-                "gear mesh needs z=za,zb and a carrier): solve at the sketch pose"
+                "from the sketch a cam needs its profile (a 'cam CAM LINK FILE' statement "
+                "naming its program, see assur cam), a gear mesh z=za,zb and a carrier: solve "
+                "at the sketch pose"
             )
         # gear meshes roll: their virtual links give way to the rolling constraints
         plan = dataclasses.replace(plan, steps=plan.rolling, higher_pairs=())
@@ -247,6 +251,9 @@ def _solve_poses(
     _place_drivers(plan, inputs, frames, tables)
     pins = dyads.PinCache()
     for step in plan.steps:
+        if step.cam is not None:  # a designed cam: its program places the follower
+            solve_cam_step(step.cam, tables, inputs, rates, plan.driver_kinds)
+            continue
         # looked up on the module at call time, so a test can switch a closed form off
         if dyads.frame_dyad(step, plan, frames, tables, pins, inputs, rates, watch):
             continue

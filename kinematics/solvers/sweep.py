@@ -345,7 +345,8 @@ def _transmission(plan: SolvePlan, motion: Motion, points) -> dict[str, np.ndarr
 
 def _balancing(plan: SolvePlan, motion: Motion) -> dict[str, np.ndarray]:
     """The balancing moment (or force) over the poses, when the file has loads."""
-    rolled = any(link not in motion.q for link, *_ in plan.contacts)
+    profiled = {cam.virtual for cam in plan.cams}  # a designed cam's contact force is solved
+    rolled = any(link not in motion.q for link, *_ in plan.contacts if link not in profiled)
     if not plan.mechanism.loads or rolled or any(s.group is None for s in plan.steps):
         return {}
     forces = forces_over(plan, motion)

@@ -24,9 +24,10 @@ direction), ``span=S``, ``friction=F``; ``flat=L``, ``roller=L``,
 ``centers=O1,O2``, ``normal=DEG`` (H), and for a gear mesh the word ``gear``
 with ``z=ZA,ZB``, ``internal=L``, ``module=M``. Loads: ``force LINK POINT fx
 fy``, ``moment LINK M``, ``mass LINK m J S``, ``gravity gx gy``, ``balance
-LINK POINT angle=DEG``. The words ``name``, ``ground``, ``driver``, ``point``
-and the load words are reserved at the start of a line (unless the third
-word is a pair kind).
+LINK POINT angle=DEG``. A cam with a profile: ``cam CAM LINK FILE [at=DEG]``
+(:mod:`structure.readwrite.camfile`). The words ``name``, ``ground``,
+``driver``, ``point``, ``cam`` and the load words are reserved at the start of
+a line (unless the third word is a pair kind).
 
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> m.driver_links, len(m.pairs)
@@ -49,6 +50,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..cams import CamRef
 from ..errors import EdgeListError, EdgeListProblem, NumberError, StatementError
 from ..expressions import read_number
 from ..kinds import LoadKind, PairKind
@@ -73,6 +75,7 @@ from ..validation import (
     tooth_number,
     validated,
 )
+from .camfile import cam_from_tokens
 from .jsonformat import mechanism_from_json
 from .textfile import opened
 
@@ -85,7 +88,7 @@ __all__ = [
 ]
 
 #: the words that start a statement other than a pair (``name`` starts a title)
-_STATEMENTS = frozenset(("ground", "driver", "point", *(k.value for k in LoadKind)))
+_STATEMENTS = frozenset(("ground", "driver", "point", "cam", *(k.value for k in LoadKind)))
 _KIND_OF = {k.value: k for k in PairKind}
 
 
@@ -109,7 +112,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         a pair from a link to itself, duplicate points, a compound hinge with
         a cycle, a link or driver not joined to the ground, an empty file.
     """
-    found = _Statements()
+    found = _Statements(source=source)
     pairs = found.pairs
     names = found.names
     # pair k's id is the int that numbers line k (k is at most its own line): a large file
@@ -143,6 +146,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         found.name,
         source,
         tuple(found.loads),
+        tuple(found.cams),
     )
     return validated(mechanism, ground_line=found.ground_line)
 
@@ -159,6 +163,9 @@ class _Statements:
     points: dict[str, PointDef] = field(default_factory=dict)
     loads: list[Load] = field(default_factory=list)
     problems: list[EdgeListProblem] = field(default_factory=list)
+    cams: list[CamRef] = field(default_factory=list)
+    #: where the description comes from: a cam's program file is read beside it
+    source: str = "<string>"
     #: each name of a link once: a link is named on ~3 lines of a large file, and its pairs
     #: share one string (a local table, freed after the read, unlike sys.intern's); the
     #: point of a plain pair line is not looked up (most points are named on one line only)
@@ -173,6 +180,8 @@ class _Statements:
             self.drivers.append(_driver(tokens, line_no))
         elif head == "point":
             self._add_point(_point(tokens, line_no))
+        elif head == "cam":
+            self.cams.append(cam_from_tokens(tokens, line_no, self.source))
         else:
             self.loads.append(_load(tokens, line_no))
 
@@ -480,4 +489,23 @@ def write_edgelist(mechanism: Mechanism) -> str:
     out.extend(p.statement for p in mechanism.pairs)
     out.extend(p.statement for p in mechanism.points.values())
     out.extend(load.statement for load in mechanism.loads)
+    out.extend(_cam_statement(mechanism, ref) for ref in mechanism.cams)
     return "\n".join(out) + "\n"
+
+
+def _cam_statement(mechanism: Mechanism, ref: CamRef) -> str:
+    """A ``cam`` line: it needs the program's file, which a spec read inline from JSON has not.
+
+    Raises
+    ------
+    EdgeListError
+        The cam's program is held inline (no file to refer to).
+    """
+    if ref.path is None:
+        reason = (
+            f"{ref.label}: its program is held inline (read from JSON), and the edge list refers "
+            "to a program file: write the mechanism as JSON, or save the program to a file "
+            "(assur cam SPEC -o M.edges writes both)"
+        )
+        raise EdgeListError(mechanism.source, [EdgeListProblem(0, "", reason)])
+    return ref.statement

@@ -38,6 +38,7 @@ from ..model import (
     make_point,
 )
 from ..validation import DRIVER_KEYS, tooth_number, validated
+from .camfile import cam_from_item, cam_to_item
 
 __all__ = [
     "decode_json",
@@ -47,7 +48,7 @@ __all__ = [
     "mechanism_to_json",
 ]
 
-_TOP_KEYS = ("name", "ground", "drivers", "pairs", "points", "loads")
+_TOP_KEYS = ("name", "ground", "drivers", "pairs", "points", "loads", "cams")
 _PAIR_FIELDS = (
     "links",
     "kind",
@@ -194,11 +195,13 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
     drivers = _read_drivers(data.get("drivers", []), problems)
     points = _read_points(data.get("points", {}), problems)
     loads = _read_loads(data.get("loads", []), problems)
+    cams = _read_cams(data.get("cams", []), source, problems)
     if problems:
         raise EdgeListError(source, problems)
     mechanism = Mechanism(
-        tuple(pairs), _text(ground), tuple(drivers), points, name, source, tuple(loads)
-    )
+        tuple(pairs), _text(ground), tuple(drivers), points, name, source, tuple(loads),
+        tuple(cams),
+    )  # fmt: skip
     return validated(mechanism)
 
 
@@ -435,6 +438,20 @@ def _read_load(item: Any, where: str, problems: _Problems) -> Load | None:
 _LOAD_WORDS = frozenset(k.value for k in LoadKind)
 
 
+def _read_cams(raw: Any, source: str, problems: _Problems) -> list:
+    """The ``cams`` entries (:func:`~structure.readwrite.camfile.cam_from_item`)."""
+    if not isinstance(raw, list):
+        problems.add("cams", "must be a list")
+        return []
+    cams = []
+    for i, item in enumerate(raw):
+        try:
+            cams.append(cam_from_item(item, source))
+        except StatementError as exc:
+            problems.add(f"cams[{i}]", exc.reason)
+    return cams
+
+
 def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
     """The JSON-shaped dict of ``mechanism`` (inverse of :func:`mechanism_from_dict`)."""
     out: dict[str, Any] = {}
@@ -484,6 +501,8 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
             }
             for x in mechanism.loads
         ]
+    if mechanism.cams:
+        out["cams"] = [cam_to_item(ref) for ref in mechanism.cams]
     if mechanism.points:
         out["points"] = {}
         for p in mechanism.points.values():

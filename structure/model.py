@@ -53,6 +53,8 @@ from .validation import (
 if TYPE_CHECKING:
     import networkx as nx
 
+    from .cycle import CycleLoad
+
 __all__ = [
     "DRIVER_KEYS",
     "LOAD_KINDS",
@@ -655,6 +657,8 @@ class Mechanism:
     name: str = ""
     source: str = "<python>"
     loads: tuple[Load, ...] = ()
+    #: the drive and the loads over the cycle (``drive``, ``cycle`` lines: :mod:`structure.cycle`)
+    cycle_loads: tuple[CycleLoad, ...] = ()
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
     shared_hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
@@ -738,6 +742,7 @@ class Mechanism:
             "name": self.name,
             "source": self.source,
             "loads": self.loads,
+            "cycle_loads": self.cycle_loads,
         }
         fields.update(changes)
         if "drivers" in changes:

@@ -47,7 +47,7 @@ _PUBLIC_BY_MODULE = {
         "solve_forces",
     ),
     "solvers.exact": ("ExactForces", "ExactState", "forces_exact", "solve_exact"),
-    "kinetostatics.inertia": ("reduced_inertia_over",),
+    "dynamics.reduced": ("ReducedProperties", "reduced_inertia_over", "reduced_properties"),
     "kinetostatics.polygons": ("Term", "VectorEquation", "vector_equations"),
     "results.serialization": (
         "exact_forces_to_dict",
@@ -113,7 +113,8 @@ alias_moved_modules(
         "kinematics.exact": "kinematics.solvers.exact",
         "kinematics.forces": "kinematics.kinetostatics.forces",
         "kinematics.polygons": "kinematics.kinetostatics.polygons",
-        "kinematics.inertia": "kinematics.kinetostatics.inertia",
+        "kinematics.inertia": "kinematics.dynamics.reduced",
+        "kinematics.kinetostatics.inertia": "kinematics.dynamics.reduced",
         "kinematics.state": "kinematics.results.state",
         "kinematics.serialization": "kinematics.results.serialization",
         "kinematics.export": "kinematics.results.export",

@@ -34,8 +34,12 @@ __all__ = [
     "DEAD_CENTRE",
     "AssemblyError",
     "BranchChangeError",
+    "DynamicsError",
     "IndeterminateError",
+    "IntegrationError",
+    "NoSteadyRunningError",
     "SingularPoseError",
+    "StallError",
     "SweepSizeError",
     "inputs_text",
 ]
@@ -157,3 +161,28 @@ class IndeterminateError(MechanismError):
 
 class SweepSizeError(MechanismError):
     """A sweep asks for more poses than fit in the memory a sweep may take."""
+
+
+class DynamicsError(MechanismError):
+    """The machine's motion over its cycle cannot be found (one driver, masses, a whole turn)."""
+
+
+class NoSteadyRunningError(DynamicsError):
+    """The drive and the loads admit no steady running: the machine runs away or stops."""
+
+
+class StallError(NoSteadyRunningError):
+    """The drive is too weak: the machine stops at ``phi`` (rad from the sketch).
+
+    ``shortfall`` is by how much the drive's torque falls short of the loads'
+    (N·m, reduced to the driver), as the message explains.
+    """
+
+    def __init__(self, message: str, phi: float, shortfall: float):
+        self.phi = phi
+        self.shortfall = shortfall
+        super().__init__(message)
+
+
+class IntegrationError(DynamicsError):
+    """An integration of the equation of motion that is stiff, diverges or takes too long."""

@@ -51,6 +51,31 @@ def _step(x: np.ndarray) -> np.ndarray:
     return np.where(x >= 0, 1.0, 0.0)
 
 
+def _scalar_step(x: float) -> float:
+    return 1.0 if x >= 0 else 0.0
+
+
+#: name -> the function of floats, for one value at a time (a domain error gives NaN)
+_SCALAR_FUNCTIONS: dict[str, Callable[..., float]] = {
+    "sin": math.sin,
+    "cos": math.cos,
+    "tan": math.tan,
+    "exp": math.exp,
+    "log": math.log,
+    "sqrt": math.sqrt,
+    "abs": abs,
+    "step": _scalar_step,
+    "min": min,
+    "max": max,
+}
+_SCALAR_BINARY: dict[str, Callable[[float, float], float]] = {
+    "+": float.__add__,
+    "-": float.__sub__,
+    "*": float.__mul__,
+    "/": float.__truediv__,
+    "^": float.__pow__,
+}
+
 #: name -> (number of arguments, the numpy function)
 FUNCTIONS: dict[str, tuple[int, Callable[..., np.ndarray]]] = {
     "sin": (1, np.sin),
@@ -234,6 +259,20 @@ def _evaluate(node: Node, phi: np.ndarray, omega: np.ndarray) -> np.ndarray:
     return function(*(_evaluate(arg, phi, omega) for arg in node[2]))
 
 
+def _scalar(node: Node, phi: float, omega: float) -> float:
+    kind = node[0]
+    if kind == "num":
+        return node[1]
+    if kind == "var":
+        return phi if node[1] == "phi" else omega
+    if kind == "neg":
+        return -_scalar(node[1], phi, omega)
+    if kind == "bin":
+        left = _scalar(node[2], phi, omega)
+        return _SCALAR_BINARY[node[1]](left, _scalar(node[3], phi, omega))
+    return float(_SCALAR_FUNCTIONS[node[1]](*(_scalar(arg, phi, omega) for arg in node[2])))
+
+
 @dataclass(frozen=True, slots=True)
 class Formula:
     """A formula of ``phi`` and ``omega`` as written, and its parsed tree.
@@ -256,6 +295,14 @@ class Formula:
         with np.errstate(all="ignore"):
             value = _evaluate(self.tree, phi, omega)
         return np.broadcast_to(np.asarray(value, dtype=float), np.broadcast(phi, omega).shape)
+
+    def value(self, phi: float, omega: float) -> float:
+        """The formula at one ``phi`` and ``omega``, with floats (fast); NaN where not defined."""
+        try:
+            result = _scalar(self.tree, float(phi), float(omega))
+        except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+            return math.nan  # a complex power gives NotImplemented, then a TypeError
+        return result if isinstance(result, float) else math.nan
 
 
 def read_formula(text: str) -> Formula:

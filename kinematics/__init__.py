@@ -48,6 +48,8 @@ _PUBLIC_BY_MODULE = {
     ),
     "solvers.exact": ("ExactForces", "ExactState", "forces_exact", "solve_exact"),
     "dynamics.reduced": ("ReducedProperties", "reduced_inertia_over", "reduced_properties"),
+    "dynamics.machine": ("ReducedMachine", "reduced_machine"),
+    "dynamics.motion": ("Run", "SteadyRunning", "run_down", "start_up", "steady_running"),
     "kinetostatics.polygons": ("Term", "VectorEquation", "vector_equations"),
     "results.serialization": (
         "exact_forces_to_dict",

@@ -2,13 +2,15 @@
 
 The crank AB turns about A = (0, 0), the rocker DC about D = (d, 0); the
 coupler BC joins them. With the crank angle θ the pin C is the intersection of
-the circles |C − B| = b, |C − D| = c taken on the sketch's side. Every other
-quantity (the centres of mass, the link angles, their derivatives by θ) is
-differentiated symbolically: nothing of assur is used.
+the circles |C − B| = b, |C − D| = c taken on the sketch's side; it and its
+first two derivatives by θ are sympy's. The links' angular velocities and
+accelerations follow from the pins (ω = u × u'/|u|²), the centres of mass from
+them (S' = O' + ω·k×r, S'' = O'' + ε·k×r − ω²·r): nothing of assur is used.
 """
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,22 +56,69 @@ def _local(point, origin, toward):
 
 @dataclass(frozen=True)
 class FourBar:
-    """Lambdified functions of the crank angle θ (from the x axis)."""
+    """Functions of the crank angle θ (from the x axis): centres, angles, J_r and its slope."""
 
-    theta0: float
-    centres: object  # θ -> [(x1, y1), (x2, y2), (x3, y3)]
-    angles: object  # θ -> [θ1, θ2, θ3]
-    velocity_ratios: object  # θ -> [(dx/dθ, dy/dθ) for each centre], [dθk/dθ]
-    reduced_inertia: object  # θ -> J_r
-    reduced_slope: object  # θ -> dJ_r/dθ
+    pin_c: object  # θ -> (C, dC/dθ, d²C/dθ²), each of shape (2, len(θ))
+
+    def _rates(self, theta):
+        """For each link: (centre, its 1st and 2nd derivatives, angle, ω = dθk/dθ, ε)."""
+        theta = np.atleast_1d(np.asarray(theta, dtype=float))
+        a = _dist(A, B)
+        unit = np.array([np.cos(theta), np.sin(theta)])
+        turn = np.array([-np.sin(theta), np.cos(theta)])
+        b, db, ddb = a * unit, a * turn, -a * unit
+        c, dc, ddc = (np.array(x, dtype=float) for x in self.pin_c(theta))
+        out = []
+        frames = (
+            (np.zeros_like(b), np.zeros_like(b), np.zeros_like(b), b, db, ddb, _local(S1, A, B)),
+            (b, db, ddb, c - b, dc - db, ddc - ddb, _local(S2, B, C)),
+            (np.array(D)[:, None] + 0 * b, 0 * b, 0 * b, c - np.array(D)[:, None], dc, ddc,
+             _local(S3, D, C)),
+        )  # fmt: skip
+        for origin, d_origin, dd_origin, u, du, ddu, z in frames:
+            n2 = (u * u).sum(0)
+            cross1 = u[0] * du[1] - u[1] * du[0]
+            cross2 = u[0] * ddu[1] - u[1] * ddu[0]
+            omega = cross1 / n2
+            epsilon = cross2 / n2 - 2 * (u * du).sum(0) * cross1 / n2**2
+            angle = np.arctan2(u[1], u[0])
+            ca, sa = np.cos(angle), np.sin(angle)
+            r = np.array([z[0] * ca - z[1] * sa, z[0] * sa + z[1] * ca])  # R(angle)·z
+            jr = np.array([-r[1], r[0]])
+            centre = origin + r
+            d_centre = d_origin + omega * jr
+            dd_centre = dd_origin + epsilon * jr - omega**2 * r
+            out.append((centre, d_centre, dd_centre, angle, omega, epsilon))
+        return out
+
+    def centres(self, theta: float) -> list[tuple[float, float]]:
+        return [(float(x[0][0, 0]), float(x[0][1, 0])) for x in self._rates(theta)]
+
+    def angles(self, theta: float) -> list[float]:
+        return [float(x[3][0]) for x in self._rates(theta)]
+
+    def reduced_inertia(self, theta):
+        parts = self._rates(theta)
+        return sum(
+            m * (x[1] ** 2).sum(0) + j * x[4] ** 2
+            for m, j, x in zip((M1, M2, M3), (J1, J2, J3), parts, strict=True)
+        )
+
+    def reduced_slope(self, theta):
+        parts = self._rates(theta)
+        return sum(
+            2 * m * (x[1] * x[2]).sum(0) + 2 * j * x[4] * x[5]
+            for m, j, x in zip((M1, M2, M3), (J1, J2, J3), parts, strict=True)
+        )
 
 
 def _dist(p, q) -> float:
     return ((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2) ** 0.5
 
 
+@functools.cache
 def build() -> FourBar:
-    """The four-bar above, in closed form."""
+    """The four-bar above: the pin C in closed form (sympy), the rest by the rules of kinematics."""
     t = sp.Symbol("theta", real=True)
     a, b, c = _dist(A, B), _dist(B, C), _dist(D, C)
     bx, by = a * sp.cos(t), a * sp.sin(t)
@@ -81,38 +130,8 @@ def build() -> FourBar:
     sign = _sketch_sign(a, b, c)
     cx = bx + along * ex - sign * across * ey
     cy = by + along * ey + sign * across * ex
-    th1 = t
-    th2 = sp.atan2(cy - by, cx - bx)
-    th3 = sp.atan2(cy - D[1], cx - D[0])
-    z1 = _local(S1, A, B)
-    z2 = _local(S2, B, C)
-    z3 = _local(S3, D, C)
-
-    def centre(ox, oy, th, z):
-        return (
-            ox + z[0] * sp.cos(th) - z[1] * sp.sin(th),
-            oy + z[0] * sp.sin(th) + z[1] * sp.cos(th),
-        )
-
-    s1 = centre(A[0], A[1], th1, z1)
-    s2 = centre(bx, by, th2, z2)
-    s3 = centre(D[0], D[1], th3, z3)
-    centres = [s1, s2, s3]
-    angles = [th1, th2, th3]
-    dcentres = [(sp.diff(x, t), sp.diff(y, t)) for x, y in centres]
-    dangles = [sp.diff(th, t) for th in angles]
-    jr = sum(
-        m * (dx**2 + dy**2) + j * w**2
-        for m, j, (dx, dy), w in zip((M1, M2, M3), (J1, J2, J3), dcentres, dangles, strict=True)
-    )
-    return FourBar(
-        0.0,
-        sp.lambdify(t, centres, "numpy"),
-        sp.lambdify(t, angles, "numpy"),
-        sp.lambdify(t, (dcentres, dangles), "numpy"),
-        sp.lambdify(t, jr, "numpy"),
-        sp.lambdify(t, sp.diff(jr, t), "numpy"),
-    )
+    pin = [sp.Matrix([cx, cy]).diff(t, k) for k in range(3)]
+    return FourBar(sp.lambdify(t, [list(p) for p in pin], "numpy", cse=True))
 
 
 def _sketch_sign(a: float, b: float, c: float) -> float:

@@ -50,6 +50,7 @@ _PUBLIC_BY_MODULE = {
     "dynamics.reduced": ("ReducedProperties", "reduced_inertia_over", "reduced_properties"),
     "dynamics.machine": ("ReducedMachine", "reduced_machine"),
     "dynamics.motion": ("Run", "SteadyRunning", "run_down", "start_up", "steady_running"),
+    "dynamics.flywheel": ("Flywheel", "flywheel"),
     "kinetostatics.polygons": ("Term", "VectorEquation", "vector_equations"),
     "results.serialization": (
         "exact_forces_to_dict",

@@ -41,7 +41,15 @@ from scipy.optimize import brentq
 from ..errors import DynamicsError, IntegrationError, NoSteadyRunningError, StallError
 from .machine import ReducedMachine
 
-__all__ = ["Limits", "Run", "SteadyRunning", "run_down", "start_up", "steady_running"]
+__all__ = [
+    "DEFAULT_LIMITS",
+    "Limits",
+    "Run",
+    "SteadyRunning",
+    "run_down",
+    "start_up",
+    "steady_running",
+]
 
 _TURN = 2 * math.pi
 
@@ -58,6 +66,10 @@ class Limits:
     seconds: float = 20.0  # of wall clock
     evaluations: int = 4_000_000
     rtol: float = 1e-11
+
+
+#: the bounds of a run unless others are given
+DEFAULT_LIMITS = Limits()
 
 
 @dataclass(frozen=True)
@@ -122,6 +134,9 @@ class SteadyRunning:
         The constant inertia added to J_r (kg·m²).
     method : str
         ``"energy"`` (M_r without ω: closed form and one root) or ``"shooting"``.
+    fine_phi, fine_omega : numpy.ndarray
+        The same on poses eight times finer, with a table's corners (where
+        the extremes are taken).
     """
 
     phi: np.ndarray
@@ -137,10 +152,12 @@ class SteadyRunning:
     energy: float
     flywheel: float
     method: str
+    fine_phi: np.ndarray = field(repr=False, compare=False, default=None)
+    fine_omega: np.ndarray = field(repr=False, compare=False, default=None)
 
     def omega_at(self, phi: np.ndarray | float) -> np.ndarray:
-        """ω at angles of the turn (any turn), linear between the poses."""
-        return np.interp(np.mod(phi, _TURN), self.phi, self.omega)
+        """ω at angles of the turn (any turn), linear between the fine poses."""
+        return np.interp(np.mod(phi, _TURN), self.fine_phi, self.fine_omega)
 
 
 class _Budget:
@@ -311,7 +328,7 @@ def start_up(
     flywheel: float = 0.0,
     steady: SteadyRunning | None = None,
     tolerance: float = 1e-3,
-    limits: Limits = Limits(),
+    limits: Limits = DEFAULT_LIMITS,
     dense: bool = False,
 ) -> Run:
     """The machine started from rest (or ``omega0``) at ``phi0`` with its drive.
@@ -347,7 +364,7 @@ def run_down(
     *,
     phi0: float = 0.0,
     flywheel: float = 0.0,
-    limits: Limits = Limits(),
+    limits: Limits = DEFAULT_LIMITS,
     dense: bool = False,
 ) -> Run:
     """The machine running at ``omega0`` at ``phi0`` with the drive off, until it stops.
@@ -401,7 +418,7 @@ def _summary(
     time_mean = _TURN / period
     return SteadyRunning(
         machine.properties.phi, omega[at], times[at], period, high, low, mean, time_mean,
-        (high - low) / mean, (high - low) / time_mean, energy, flywheel, method,
+        (high - low) / mean, (high - low) / time_mean, energy, flywheel, method, fine, omega,
     )  # fmt: skip
 
 
@@ -482,7 +499,8 @@ def steady_running(
     *,
     speed: float | None = None,
     flywheel: float = 0.0,
-    limits: Limits = Limits(),
+    limits: Limits = DEFAULT_LIMITS,
+    guess: float | None = None,
 ) -> SteadyRunning:
     """The periodic motion of the machine over one turn, found directly.
 
@@ -496,6 +514,9 @@ def steady_running(
         the speed is then the drive's.
     flywheel : float
         A constant inertia added to J_r (kg·m²).
+    guess : float, optional
+        Where M_r depends on ω: a speed at φ = 0 near the answer (a nearby
+        machine's), to start the search from.
 
     Raises
     ------
@@ -510,7 +531,7 @@ def steady_running(
     """
     _check_inertia(machine, flywheel)
     if machine.uses_omega:
-        return _shooting(machine, flywheel, limits)
+        return _shooting(machine, flywheel, limits, guess)
     target = machine.nominal_speed if speed is None else speed
     if target is None or target <= 0 or not math.isfinite(target):
         raise DynamicsError(
@@ -580,11 +601,30 @@ def _balanced_speed(machine: ReducedMachine, flywheel: float) -> float:
     )
 
 
-def _bracket(machine: ReducedMachine, gap) -> tuple[float, float]:
+def _secant(gap, guess: float) -> float | None:
+    """The root of ``gap`` by secant steps from ``guess`` (a nearby machine's speed), or None."""
+    a, b = guess, guess * (1 + 1e-4)
+    fa, fb = gap(a), gap(b)
+    for _ in range(12):
+        if not (math.isfinite(fa) and math.isfinite(fb)) or fa == fb:
+            return None
+        a, b, fa = b, b - fb * (b - a) / (fb - fa), fb
+        if not b > 0:
+            return None
+        fb = gap(b)
+        if abs(b - a) <= 1e-11 * abs(b):
+            return b if math.isfinite(fb) else None
+    return None
+
+
+def _bracket(machine: ReducedMachine, gap, guess: float | None) -> tuple[float, float]:
     """Speeds at φ = 0 below and above steady running: the turn speeds up, and slows down."""
-    guess = _balanced_speed(machine, 0.0)
-    low = high = guess
     step = 0.05
+    if guess is None:
+        guess = _balanced_speed(machine, 0.0)
+    else:
+        step = 1e-3
+    low = high = guess
     for _ in range(200):
         value = gap(high)
         if math.isfinite(value) and value < 0:
@@ -609,7 +649,9 @@ def _bracket(machine: ReducedMachine, gap) -> tuple[float, float]:
     return low, high
 
 
-def _shooting(machine: ReducedMachine, flywheel: float, limits: Limits) -> SteadyRunning:
+def _shooting(
+    machine: ReducedMachine, flywheel: float, limits: Limits, guess: float | None
+) -> SteadyRunning:
     """The speed at φ = 0 that comes back after one turn (M_r depends on ω)."""
     props = machine.properties
     fine, _ = _fine_poses(machine)
@@ -661,8 +703,10 @@ def _shooting(machine: ReducedMachine, flywheel: float, limits: Limits) -> Stead
             return -math.inf  # stops within the turn
         return math.sqrt(2 * max(float(end[0, -1]), 0.0) / inertia0) - omega0
 
-    low, high = _bracket(machine, gap)
-    omega0 = brentq(gap, low, high, xtol=1e-11 * high, rtol=1e-12, maxiter=200)
+    omega0 = _secant(gap, guess) if guess is not None else None
+    if omega0 is None:
+        low, high = _bracket(machine, gap, guess)
+        omega0 = brentq(gap, low, high, xtol=1e-11 * high, rtol=1e-12, maxiter=200)
     states, _ = turn(omega0, dense=True)
     energy, times = states
     omega = np.sqrt(2 * np.maximum(energy, 0.0) / (machine.inertia(fine)[0] + flywheel))

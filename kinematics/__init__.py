@@ -51,6 +51,8 @@ _PUBLIC_BY_MODULE = {
     "dynamics.machine": ("ReducedMachine", "reduced_machine"),
     "dynamics.motion": ("Run", "SteadyRunning", "run_down", "start_up", "steady_running"),
     "dynamics.flywheel": ("Flywheel", "flywheel"),
+    "dynamics.shaking": ("Shaking", "shaking"),
+    "dynamics.balancing": ("Balanced", "Counterweight", "balance", "counterweight"),
     "kinetostatics.polygons": ("Term", "VectorEquation", "vector_equations"),
     "results.serialization": (
         "exact_forces_to_dict",

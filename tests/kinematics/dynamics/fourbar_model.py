@@ -60,7 +60,7 @@ class FourBar:
 
     pin_c: object  # θ -> (C, dC/dθ, d²C/dθ²), each of shape (2, len(θ))
 
-    def _rates(self, theta):
+    def rates(self, theta):
         """For each link: (centre, its 1st and 2nd derivatives, angle, ω = dθk/dθ, ε)."""
         theta = np.atleast_1d(np.asarray(theta, dtype=float))
         a = _dist(A, B)
@@ -92,20 +92,20 @@ class FourBar:
         return out
 
     def centres(self, theta: float) -> list[tuple[float, float]]:
-        return [(float(x[0][0, 0]), float(x[0][1, 0])) for x in self._rates(theta)]
+        return [(float(x[0][0, 0]), float(x[0][1, 0])) for x in self.rates(theta)]
 
     def angles(self, theta: float) -> list[float]:
-        return [float(x[3][0]) for x in self._rates(theta)]
+        return [float(x[3][0]) for x in self.rates(theta)]
 
     def reduced_inertia(self, theta):
-        parts = self._rates(theta)
+        parts = self.rates(theta)
         return sum(
             m * (x[1] ** 2).sum(0) + j * x[4] ** 2
             for m, j, x in zip((M1, M2, M3), (J1, J2, J3), parts, strict=True)
         )
 
     def reduced_slope(self, theta):
-        parts = self._rates(theta)
+        parts = self.rates(theta)
         return sum(
             2 * m * (x[1] * x[2]).sum(0) + 2 * j * x[4] * x[5]
             for m, j, x in zip((M1, M2, M3), (J1, J2, J3), parts, strict=True)

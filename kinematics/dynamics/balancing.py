@@ -45,6 +45,7 @@ __all__ = [
     "Counterweight",
     "Harmonics",
     "balance",
+    "balanced_to_dict",
     "counterweight",
     "with_counterweights",
 ]
@@ -446,3 +447,57 @@ def balance(
         fraction if method == "primary" else None,
         tuple(notes),
     )
+
+
+def _side(shaken: Shaking, torque: np.ndarray) -> dict:
+    return {
+        "force_max": shaken.force_max,
+        "moment_max": shaken.moment_max,
+        "torque_max": float(np.max(np.abs(torque))),
+        "fx": [float(v) for v in shaken.force[:, 0]],
+        "fy": [float(v) for v in shaken.force[:, 1]],
+        "m": [float(v) for v in shaken.moment],
+        "torque": [float(v) for v in torque],
+    }
+
+
+def _harmonics_dict(h: Harmonics | None) -> dict | None:
+    if h is None:
+        return None
+    return {
+        "primary": h.primary,
+        "secondary": h.secondary,
+        "reciprocating_mass": h.reciprocating,
+        "rotating_mass_moment": h.rotating,
+        "lanchester_mass_moment": h.lanchester,
+    }
+
+
+def balanced_to_dict(result: Balanced) -> dict:
+    """The balance as plain data (the keys of ``assur balance --json``)."""
+    return {
+        "method": result.method,
+        "omega": result.before.omega,
+        "about": {"point": result.before.about_name, "xy": list(result.before.about)},
+        "phi_deg": [float(v) for v in np.degrees(result.before.phi)],
+        "counterweights": [
+            {
+                "link": w.link,
+                "mass": w.mass,
+                "position": list(w.position),
+                "radius": w.radius,
+                "pivot": w.pivot,
+            }
+            for w in result.counterweights
+        ],
+        "before": {
+            **_side(result.before, result.torque_before),
+            "harmonics": _harmonics_dict(result.harmonics),
+        },
+        "after": {
+            **_side(result.after, result.torque_after),
+            "harmonics": _harmonics_dict(result.harmonics_after),
+        },
+        "fraction": result.fraction,
+        "notes": list(result.notes),
+    }

@@ -67,7 +67,8 @@ class Flywheel:
         (−J_F, −E0): where the tangents meet (the diagram's true origin; where M_r
         depends on ω, the diagram's at the speed without the flywheel).
     tangents : tuple of tuple of float
-        For ω_max and ω_min: (slope ω²/2, the angle of contact in rad).
+        For ω_max and ω_min: (slope k = ω²/2, the angle of contact in rad, and
+        A = max(W − k_max·J_r) or B = min(W − k_min·J_r) in J).
     steady : SteadyRunning or None
         The steady running with the flywheel: its δ checks the answer.
     """
@@ -83,7 +84,7 @@ class Flywheel:
     work: np.ndarray
     inertia: np.ndarray
     origin: tuple[float, float]
-    tangents: tuple[tuple[float, float], tuple[float, float]]
+    tangents: tuple[tuple[float, float, float], tuple[float, float, float]]
     steady: SteadyRunning | None
 
 
@@ -186,6 +187,8 @@ def flywheel(
     at = np.searchsorted(phi, machine.properties.phi)
     k_max = 0.5 * (omega_mean * (1 + delta / 2)) ** 2
     k_min = 0.5 * (omega_mean * (1 - delta / 2)) ** 2
+    upper = float(work[top] - k_max * inertia[top])
+    lower = float(work[bottom] - k_min * inertia[bottom])
     return Flywheel(
         delta,
         float(omega_mean),
@@ -198,7 +201,7 @@ def flywheel(
         work[at],
         inertia[at],
         (-exact, -energy0),
-        ((k_max, float(phi[top])), (k_min, float(phi[bottom]))),
+        ((k_max, float(phi[top]), upper), (k_min, float(phi[bottom]), lower)),
         check,
     )
 

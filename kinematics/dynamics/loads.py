@@ -126,7 +126,9 @@ class LoadTerm:
     ``ratio`` holds the samples over the poses of the properties it was made
     for: dθ/dφ of the link a moment acts on, the projection of dr/dφ on a
     force's direction, 1 for the drive; for the file's constant loads and for
-    gravity (``law`` None) their whole reduced moment.
+    gravity (``law`` None) their whole reduced moment. ``kind`` is ``"loads"``
+    (the file's forces and moments), ``"gravity"``, ``"moment"``, ``"force"``
+    or ``"drive"``; ``link`` and ``point`` say where it acts.
     """
 
     label: str
@@ -134,6 +136,9 @@ class LoadTerm:
     ratio: np.ndarray
     drive: bool = False
     line_no: int = 0
+    kind: str = "loads"
+    link: str = ""
+    point: str | None = None
 
 
 def _point_rates(mechanism: Mechanism, props: ReducedProperties, link: str, point: str | None):
@@ -210,7 +215,7 @@ def load_terms(
             weight += load.values[0] * (
                 _point_rates(mechanism, props, load.link, load.point) @ gravity
             )
-        terms.append(LoadTerm("gravity", None, weight))
+        terms.append(LoadTerm("gravity", None, weight, kind="gravity"))
     for load in mechanism.cycle_loads:
         if load.kind is CycleLoadKind.DRIVE:
             continue
@@ -224,7 +229,9 @@ def load_terms(
     law = (found.law if found is not None else None) if drive == FROM_FILE else drive
     if isinstance(law, Law):
         line = found.line_no if drive == FROM_FILE and found is not None else 0
-        terms.append(LoadTerm(f"drive on {props.driver}", law, np.ones(n), True, line))
+        terms.append(
+            LoadTerm(f"drive on {props.driver}", law, np.ones(n), True, line, "drive", props.driver)
+        )
     return terms
 
 
@@ -245,14 +252,15 @@ def _cycle_term(
     line = f" (line {load.line_no})" if load.line_no else ""
     if load.kind is CycleLoadKind.MOMENT:
         ratio = _rate(props, load.link, ratios)
-        return LoadTerm(f"moment on {load.link}{line}", load.law, ratio, False, load.line_no)
+        label = f"moment on {load.link}{line}"
+        return LoadTerm(label, load.law, ratio, False, load.line_no, "moment", load.link)
     if ratios is not None:
         raise DynamicsError("a force on a gear train needs the mechanism's coordinates")
     v = _point_rates(mechanism, props, load.link, load.point)
     angle = load.angle or 0.0
     ratio = v @ np.array([math.cos(angle), math.sin(angle)])
     label = f"force on {load.link} at {load.point}{line}"
-    return LoadTerm(label, load.law, ratio, False, load.line_no)
+    return LoadTerm(label, load.law, ratio, False, load.line_no, "force", load.link, load.point)
 
 
 def parse_drive(text: str) -> Law | None:

@@ -33,7 +33,6 @@ from structure.model import PairKind
 from structure.report import StructuralReport
 
 from ..errors import DynamicsError
-from ..gears.trains import reduced_inertia, speed_ratios
 from ..solvers.plan import make_plan
 from .loads import FROM_FILE, LoadTerm, law_value, law_values, load_terms, table_breaks
 from .reduced import ReducedProperties, massless_links, reduced_properties
@@ -210,6 +209,9 @@ def _poses(steps: int) -> np.ndarray:
 
 def _train_properties(report: StructuralReport, steps: int) -> tuple[ReducedProperties, dict]:
     """A gear train without coordinates: constant ratios, J_r = Σ J·(ω/ω_in)² (+ planets)."""
+    # sympy's exact Willis ratios: imported only for a gear train without coordinates
+    from ..gears.trains import reduced_inertia, speed_ratios
+
     m = report.mechanism
     ratios = speed_ratios(m, report.drivers)
     inertia = float(reduced_inertia(m, ratios))
@@ -359,9 +361,13 @@ def _with_assumed_drive(machine: ReducedMachine) -> ReducedMachine:
             "the loads depend on ω and there is no drive: give the drive (a 'drive' line or "
             "--drive) or the driver's speed (omega=)"
         )
-    mean = -float(machine.work(phi, speed)[-1]) / _TURN
+    work = machine.work(phi, speed)
+    mean = -float(work[-1]) / _TURN
+    if abs(mean) * _TURN <= 1e-12 * float(np.max(np.abs(work))):
+        mean = 0.0  # the loads do no work over a turn: the rest is rounding
     law = Law(LawKind.CONSTANT, (mean,))
-    term = LoadTerm(f"drive on {machine.driver}", law, np.ones(len(phi)), True, 0)
+    label = f"drive on {machine.driver}"
+    term = LoadTerm(label, law, np.ones(len(phi)), True, 0, "drive", machine.driver)
     terms = (*machine.terms, term)
     series, _ = _series(machine.properties, list(terms))
     return ReducedMachine(

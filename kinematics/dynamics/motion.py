@@ -354,7 +354,11 @@ def start_up(
         steady=steady, tolerance=tolerance, dense=dense,
     )  # fmt: skip
     if run.ending == "stopped":
-        raise _stall(machine, float(run.phi[-1]), run.duration, flywheel)
+        lead = "the drive does not start the machine" if steady is not None else None
+        raise _stall(
+            machine, float(run.phi[-1]), run.duration, flywheel,
+            lead=lead or "the drive is too weak to reach steady running",
+        )  # fmt: skip
     return run
 
 
@@ -451,6 +455,7 @@ def _stall(
     after: float | None,
     flywheel: float,
     surplus: float | None = None,
+    lead: str = "the drive is too weak to reach steady running",
 ) -> StallError:
     """A drive too weak: where the machine stops and by how much its torque falls short."""
     props = machine.properties
@@ -478,14 +483,14 @@ def _stall(
     whole = int(where_phi // _TURN) if phi is not None else 0
     turns = f" (in turn {whole + 1})" if whole else ""
     mean_short = -min(surplus, 0.0) / _TURN
-    short = max(-(here_drive + here_load), 0.0)
+    short = max(-(here_drive + here_load), 0.0) + 0.0
     message = (
-        f"the drive is too weak to reach steady running: from rest the machine stops at "
-        f"φ = {turn:.4g}°{turns}{when}, where the loads need {-here_load:.6g} N·m (reduced to "
-        f"the driver) and the drive gives {here_drive:.6g} N·m at standstill, "
+        f"{lead}: from rest the machine stops at "
+        f"φ = {turn:.4g}°{turns}{when}, where the loads need {-here_load + 0.0:.6g} N·m "
+        f"(reduced to the driver) and the drive gives {here_drive + 0.0:.6g} N·m at standstill, "
         f"short by {short:.6g} N·m"
         if phi is not None
-        else "the drive is too weak to reach steady running"
+        else lead
     )
     if mean_short > 0:
         message += (

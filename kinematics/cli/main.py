@@ -42,6 +42,8 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "convert": ("convert", "run"),
     "atlas": ("atlas", "run"),
     "report": ("report", "run_report"),
+    "dynamics": ("dynamics", "run_dynamics"),
+    "balance": ("dynamics", "run_balance"),
 }
 
 

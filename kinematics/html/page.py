@@ -24,6 +24,7 @@ from ..figures import sweep_figure
 from .animation import animation_html
 from .contents import ReportContents, part_note
 from .cycle import inputs_text
+from .dynamics import dynamics_html
 from .gearing import gears_html
 from .markup import element, note
 from .phrases import say
@@ -109,6 +110,7 @@ SECTIONS: tuple[tuple[str, str, Callable[[ReportContents, str], str]], ...] = (
     ("cycle", "s_cycle", _cycle_html),
     ("gears", "s_gears", _gears_section),
     ("worked", "s_worked", _worked_html),
+    ("dynamics", "s_dynamics", dynamics_html),
 )
 
 

@@ -708,7 +708,8 @@ def _shooting(
             return -math.inf  # stops within the turn
         return math.sqrt(2 * max(float(end[0, -1]), 0.0) / inertia0) - omega0
 
-    omega0 = _secant(gap, guess) if guess is not None else None
+    start = guess if guess is not None else _balanced_speed(machine, 0.0)
+    omega0 = _secant(gap, start)
     if omega0 is None:
         low, high = _bracket(machine, gap, guess)
         omega0 = brentq(gap, low, high, xtol=1e-11 * high, rtol=1e-12, maxiter=200)

@@ -163,7 +163,9 @@ def counterweight(
         raise DynamicsError(f"a counterweight's radius must be positive, not {radius:g}")
     mass = size / radius
     at = p + moment / mass
-    return Counterweight(link, mass, (at.real, at.imag), radius, pivot)
+    reach = max((abs(c) for q in mechanism.points.values() for c in (q.x, q.y)), default=1.0)
+    x, y = (v if abs(v) > 1e-12 * (reach or 1.0) else 0.0 for v in (at.real, at.imag))
+    return Counterweight(link, mass, (x, y), radius, pivot)
 
 
 def _scale(mechanism: Mechanism) -> float:

@@ -209,6 +209,11 @@ def dynamics_lines(result: MachineDynamics) -> list[str]:
                 f"{float(run.phi[-1] - run.phi[0]) / (2 * math.pi):.4g} turns "
                 f"(at φ = {math.degrees(float(run.phi[-1])) % 360:.4g}°)"
             )
+        elif run.ending == "slowed":
+            out.append(
+                f"Run-down with the drive off: below 0.1% of its speed after {run.duration:.6g} s"
+                f", {float(run.phi[-1] - run.phi[0]) / (2 * math.pi):.4g} turns"
+            )
         else:
             out.append(f"Run-down with the drive off: still turning after {run.duration:.6g} s")
     shaken = result.shaking

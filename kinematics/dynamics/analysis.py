@@ -24,7 +24,7 @@ from ..errors import DynamicsError, StallError
 from .flywheel import Flywheel, flywheel
 from .loads import FROM_FILE
 from .machine import ReducedMachine, reduced_machine
-from .motion import Limits, Run, SteadyRunning, run_down, start_up, steady_running
+from .motion import SLOWED, Limits, Run, SteadyRunning, run_down, start_up, steady_running
 from .shaking import Shaking, shaking
 
 __all__ = ["MachineDynamics", "dynamics_to_dict", "machine_dynamics"]
@@ -223,7 +223,12 @@ def _runs(
     except DynamicsError as exc:  # a run-down that cannot be integrated is said, not fatal
         notes.append(f"the run-down: {exc}")
         return start, None
-    if stop.ending != "stopped":
+    if stop.ending == "slowed":
+        notes.append(
+            f"the run-down slows below {SLOWED:.1%} of its speed after {stop.duration:.4g} s "
+            "without quite stopping (its load falls with the speed)"
+        )
+    elif stop.ending != "stopped":
         turns = energy / max(-lost[-1], 1e-300)
         notes.append(
             f"the run-down has not stopped after {RUN_TURNS} turns ({stop.duration:.4g} s); "

@@ -7,9 +7,10 @@ obeys
     J_r·φ̈ + ½·J_r'·φ̇² = M_r(φ, φ̇),      or, in energy form,   d(½·J_r·ω²)/dφ = M_r.
 
 - :func:`start_up` and :func:`run_down` integrate it in time (scipy's
-  ``solve_ivp``, DOP853, an event at each turn of the driver and where it
-  stops): from rest with the drive until the machine runs steadily, and from
-  steady running with the drive off until it stops;
+  ``solve_ivp``, DOP853, LSODA where the machine is stiff, an event at each turn
+  of the driver and where it stops): from rest with the drive until the machine
+  runs steadily, and from steady running with the drive off until it stops (or
+  has slowed below a thousandth of its speed: a load like −k·ω² never quite stops it);
 - :func:`steady_running` finds the periodic motion directly. Where M_r does not
   depend on ω, ½·J_r·ω² = E0 + W(φ) with W the work of M_r since φ = 0: the
   one constant E0 is the root that gives the mean speed asked for (the turn's
@@ -68,6 +69,19 @@ class Limits:
     rtol: float = 1e-11
 
 
+#: a run in time takes DOP853 (its energy drifts least); a turn that needs more evaluations than
+#: this is stiff (a light machine against a load that grows with the speed), and the run goes
+#: on with LSODA, which takes BDF steps where the machine is stiff; steady running takes LSODA
+STIFF_EVALUATIONS = 20_000
+_EXPLICIT, _SWITCHING = "DOP853", "LSODA"
+#: a run-down ends where the speed falls below this fraction of the speed it started at
+SLOWED = 1e-3
+
+
+class _Stiff(Exception):
+    """One turn of a run in time needs too many explicit steps: it is stiff."""
+
+
 #: the bounds of a run unless others are given
 DEFAULT_LIMITS = Limits()
 
@@ -79,7 +93,8 @@ class Run:
     ``turns`` holds the time at which each whole turn of the driver was
     completed; ``ending`` says why the run ended: ``"steady"`` (within
     ``tolerance`` of steady running), ``"stopped"`` (ω came to 0, at ``phi[-1]``),
-    ``"turns"`` (the most turns asked for). ``solution`` holds scipy's dense
+    ``"slowed"`` (a run-down below :data:`SLOWED` of its first speed), ``"turns"`` (the
+    most turns asked for). ``solution`` holds scipy's dense
     output of each turn when the run was asked for it (``dense=True``): then
     :meth:`at` gives (φ, ω) at any time of the run.
     """
@@ -219,9 +234,13 @@ def _time_run(
     budget = _Budget(limits, kind)
     scale = max(abs(omega0), steady.omega_max if steady is not None else 0.0, 1.0)
     cap = 1e6 * scale
+    method = [_EXPLICIT, 0]  # the method, and the evaluations of the turn under way
 
     def rhs(_t: float, y: np.ndarray) -> list[float]:
         budget.spend()
+        method[1] += 1
+        if method[1] > STIFF_EVALUATIONS and method[0] == _EXPLICIT:
+            raise _Stiff
         inertia, slope, moment = machine.at(y[0], y[1], drive)
         inertia += flywheel
         return [y[1], (moment - 0.5 * slope * y[1] * y[1]) / inertia]
@@ -236,6 +255,14 @@ def _time_run(
         return abs(y[1]) - cap
 
     runaway.terminal = True  # type: ignore[attr-defined]
+    slow = SLOWED * abs(omega0) if kind == "run-down" else 0.0
+
+    def slowed(_t: float, y: np.ndarray) -> float:
+        return abs(y[1]) - slow
+
+    slowed.terminal = True  # type: ignore[attr-defined]
+    slowed.direction = -1  # type: ignore[attr-defined]
+    events = [stopped, runaway] + ([slowed] if slow > 0 else [])
 
     ts, phis, omegas = [np.array([0.0])], [np.array([phi0])], [np.array([omega0])]
     turns: list[float] = []
@@ -253,7 +280,16 @@ def _time_run(
         turned.terminal = True  # type: ignore[attr-defined]
         turned.direction = 1  # type: ignore[attr-defined]
         span = _span(machine, y, flywheel, drive)
-        sol = _integrate(rhs, (t0, t0 + span), y, [turned, stopped, runaway], limits, kind, dense)
+        method[1] = 0
+        try:
+            sol = _integrate(
+                rhs, (t0, t0 + span), y, [turned, *events], limits, kind, dense, method[0],
+            )  # fmt: skip
+        except _Stiff:
+            method[:] = [_SWITCHING, 0]
+            sol = _integrate(
+                rhs, (t0, t0 + span), y, [turned, *events], limits, kind, dense, method[0],
+            )  # fmt: skip
         pieces.append(sol.sol)
         ts.append(sol.t[1:])
         phis.append(sol.y[0, 1:])
@@ -267,6 +303,9 @@ def _time_run(
             y[1] = 0.0
             omegas[-1][-1] = 0.0
             ending = "stopped"
+            break
+        if slow > 0 and sol.t_events[3].size:
+            ending = "slowed"
             break
         if not sol.t_events[0].size:  # neither turned nor stopped within the span: go on
             continue
@@ -298,14 +337,14 @@ def _span(machine: ReducedMachine, y: np.ndarray, flywheel: float, drive: bool) 
     return 4.0 * min(by_speed, by_accel, 1e9)
 
 
-def _integrate(rhs, span, y0, events, limits: Limits, what: str, dense: bool):
+def _integrate(rhs, span, y0, events, limits: Limits, what: str, dense: bool, method: str):
     scale = np.array([1.0, max(abs(y0[1]), 1.0)])
     try:
         sol = solve_ivp(
             rhs,
             span,
             y0,
-            method="DOP853",
+            method=method,
             rtol=limits.rtol,
             atol=limits.rtol * scale * 1e-2,
             events=events,
@@ -687,7 +726,7 @@ def _shooting(
         for left, right in itertools.pairwise(edges):
             poses = fine[(fine > left) & (fine < right)] if dense else []
             sol = solve_ivp(
-                rhs, (left, right), y, method="DOP853", rtol=limits.rtol, atol=atol,
+                rhs, (left, right), y, method=_SWITCHING, rtol=limits.rtol, atol=atol,
                 events=[empty], t_eval=np.append(poses, right) if dense else None, args=(left,),
             )  # fmt: skip
             if sol.status == -1:

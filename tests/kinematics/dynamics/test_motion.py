@@ -198,3 +198,21 @@ def test_every_run_is_bounded():
         start_up(machine, limits=Limits(evaluations=300))
     with pytest.raises(IntegrationError, match="more than 300 evaluations"):
         steady_running(machine, limits=Limits(evaluations=300))
+
+
+def test_a_stiff_run_down_goes_on_with_a_stiff_method():
+    """J = 0.01 kg·m² against −ω³ N·m from 10 rad/s: dω/dt = −ω³/J, so 1/ω² = 1/ω0² + 2t/J and
+    ω falls to ω0/1000 at t = J·(10⁶ − 1)/(2·ω0²) = 49.99995 s, after φ = J·(1000 − 1)/ω0 rad.
+    Explicit steps would need hundreds of thousands of evaluations (the load's slope 3ω²/J)."""
+    lines = [
+        "driver 1",
+        "0 1 R O",
+        "point O 0 0",
+        "mass 1 0 0.01 O",
+        "cycle moment 1 formula=-omega^3",
+    ]
+    machine = reduced_machine(analyze(parse_edgelist(lines)), drive=None)
+    run = run_down(machine, 10.0, limits=Limits(evaluations=200_000))
+    assert run.ending == "slowed"
+    assert run.duration == pytest.approx(0.01 * (1e6 - 1) / 200, rel=1e-6)
+    assert run.phi[-1] == pytest.approx(0.01 * 999 / 10, rel=1e-6)

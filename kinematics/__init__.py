@@ -53,6 +53,7 @@ _PUBLIC_BY_MODULE = {
     "dynamics.flywheel": ("Flywheel", "flywheel"),
     "dynamics.shaking": ("Shaking", "shaking"),
     "dynamics.balancing": ("Balanced", "Counterweight", "balance", "counterweight"),
+    "dynamics.analysis": ("MachineDynamics", "machine_dynamics"),
     "kinetostatics.polygons": ("Term", "VectorEquation", "vector_equations"),
     "results.serialization": (
         "exact_forces_to_dict",

@@ -33,6 +33,9 @@ __all__ = ["MachineDynamics", "dynamics_to_dict", "machine_dynamics"]
 RUN_TURNS = 200
 #: a start-up ends within this fraction of the steady running's mean speed
 STEADY_WITHIN = 1e-3
+#: the runs in time are summed up by their durations and turns: a looser tolerance than the
+#: steady running's does for them
+RUN_TOLERANCE = 1e-8
 
 
 @dataclass(frozen=True)
@@ -196,7 +199,7 @@ def _runs(
     machine: ReducedMachine, steady: SteadyRunning, notes: list[str]
 ) -> tuple[Run | None, Run | None]:
     """The start-up from rest (with a drive) and the run-down from steady running."""
-    limits = Limits(turns=RUN_TURNS)
+    limits = Limits(turns=RUN_TURNS, rtol=RUN_TOLERANCE)
     start = None
     if machine.drive is not None:
         try:

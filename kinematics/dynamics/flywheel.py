@@ -234,7 +234,7 @@ def _at_goal(
     b = max((start + own) * last[0].delta / delta - own, 0.0)
     fb = gap(b)
     for _ in range(30):
-        if abs(fb) <= 1e-6 / delta or fb == fa:
+        if abs(fb) <= 1e-5 / delta or fb == fa:
             break
         a, b, fa = b, max(b - fb * (b - a) / (fb - fa), 0.0), fb
         fb = gap(b)

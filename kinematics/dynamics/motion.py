@@ -577,6 +577,12 @@ def steady_running(
     if machine.uses_omega:
         return _shooting(machine, flywheel, limits, guess)
     target = machine.nominal_speed if speed is None else speed
+    if target is not None and target < 0:
+        raise DynamicsError(
+            f"the driver turns clockwise ({target:g} rad/s): the dynamics follows a "
+            "counter-clockwise turn, φ increasing (give a positive speed, and mirror the sketch "
+            "of a machine that runs the other way)"
+        )
     if target is None or target <= 0 or not math.isfinite(target):
         raise DynamicsError(
             "the steady running of a machine whose moments do not depend on ω has any mean "

@@ -177,6 +177,7 @@ def test_with_no_drive_the_mean_load_drives_it_at_the_file_s_speed():
     [
         (["driver 1", "0 1 R O", "point O 0 0", "mass 1 0 1 O", "drive 1 2"], "give it"),
         (["driver 1 omega=3", "0 1 R O", "point O 0 0", "drive 1 0"], "no mass"),
+        (["driver 1 omega=-3", "0 1 R O", "point O 0 0", "mass 1 0 1 O", "drive 1 0"], "clockwise"),
     ],
 )
 def test_what_cannot_run_steadily_is_named(lines: list[str], said: str):

@@ -127,7 +127,7 @@ def _formulas(draw, depth: int = 3) -> tuple[str, float]:
     return f"{text}{op}({right})", _OPERATORS[op](value, other)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(_formulas())
 def test_any_formula_of_the_grammar_reads_and_has_its_value(case: tuple[str, float]) -> None:
     text, expected = case

@@ -151,8 +151,6 @@ def test_plot_and_explain(capsys, tmp_path):
             capsys, "dynamics", fixture("press_flywheel"), "--explain", "--lang", lang
         )
         assert code == 0 and word in said
-    code, said, _ = run(capsys, "dynamics", fixture("press_flywheel"), "--explain", "latex")
-    assert code == 0 and r"\section*" in said
 
 
 def test_balance_writes_the_counterweights(capsys, tmp_path):

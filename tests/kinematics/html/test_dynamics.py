@@ -2,17 +2,24 @@
 
 from __future__ import annotations
 
-from kinematics.html import gather, report_page
+import xml.etree.ElementTree as ET
+
+from kinematics.html import gather
+from kinematics.html.dynamics import dynamics_html
 from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 
 from ...conftest import FIXTURES
 from .conftest import cli_json, json_at
-from .test_page import local, notes_in, parse, section
+from .test_page import local, notes_in
 
 
-def _section(stem: str, lang: str = "en"):
-    mechanism = read_edgelist(str(FIXTURES / f"{stem}.edges"))
-    return section(parse(report_page(gather(mechanism, steps=8), lang)), "dynamics")
+def _part(mechanism, lang: str = "en") -> ET.Element:
+    """The section's body alone, parsed (the page's other sections are test_page's)."""
+    return ET.fromstring(f"<section>{dynamics_html(gather(mechanism, steps=4), lang)}</section>")
+
+
+def _section(stem: str, lang: str = "en") -> ET.Element:
+    return _part(read_edgelist(str(FIXTURES / f"{stem}.edges")), lang)
 
 
 def test_a_machine_with_masses_has_its_numbers_figures_and_solution():
@@ -43,6 +50,5 @@ def test_no_mass_data_is_one_line():
 def test_a_mechanism_without_dynamics_says_why():
     """Two drivers and a mass: the section is the one-line error of ``assur dynamics``."""
     lines = (FIXTURES / "fivebar_two_drivers.edges").read_text(encoding="utf-8").splitlines()
-    mechanism = parse_edgelist([*lines, "mass 1 1 0.01 A"])
-    part = section(parse(report_page(gather(mechanism, steps=8))), "dynamics")
+    part = _part(parse_edgelist([*lines, "mass 1 1 0.01 A"]))
     assert notes_in(part) == {"unsolved"} and "W = 2" in "".join(part.itertext())

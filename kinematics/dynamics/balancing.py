@@ -212,6 +212,8 @@ def _four_bar(plan: SolvePlan):
     """(A, crank, coupler, rocker, B, C, D) of a four-bar plan of revolute pairs, or None."""
     if len(plan.drivers) != 1 or plan.drivers[0].kind != "R" or len(plan.steps) != 1:
         return None
+    if plan.contacts:  # a higher pair's virtual link is no coupler to balance
+        return None
     group = plan.steps[0].group
     if group is None or group.kind != "RRR":
         return None
@@ -240,6 +242,8 @@ def _four_bar(plan: SolvePlan):
 def _crank_slider(plan: SolvePlan):
     """(A, crank, rod, slider, B, C, slide direction) of a crank–slider plan, or None."""
     if len(plan.drivers) != 1 or plan.drivers[0].kind != "R" or len(plan.steps) != 1:
+        return None
+    if plan.contacts:  # a higher pair's virtual link is no coupler to balance
         return None
     group = plan.steps[0].group
     if group is None or group.kind != "RRP":

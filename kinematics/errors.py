@@ -36,8 +36,12 @@ __all__ = [
     "BaseCircleError",
     "BranchChangeError",
     "CamGeometryError",
+    "DynamicsError",
     "IndeterminateError",
+    "IntegrationError",
+    "NoSteadyRunningError",
     "SingularPoseError",
+    "StallError",
     "SweepSizeError",
     "UndercutError",
     "inputs_text",
@@ -173,3 +177,28 @@ class BaseCircleError(CamGeometryError):
 class UndercutError(CamGeometryError):
     """The profile loops or has a cusp (a roller too large for the pitch curve's convex radius,
     a flat face on a profile of negative radius): it cannot be cut or followed."""
+
+
+class DynamicsError(MechanismError):
+    """The machine's motion over its cycle cannot be found (one driver, masses, a whole turn)."""
+
+
+class NoSteadyRunningError(DynamicsError):
+    """The drive and the loads admit no steady running: the machine runs away or stops."""
+
+
+class StallError(NoSteadyRunningError):
+    """The drive is too weak: the machine stops at ``phi`` (rad from the sketch).
+
+    ``shortfall`` is by how much the drive's torque falls short of the loads'
+    (N·m, reduced to the driver), as the message explains.
+    """
+
+    def __init__(self, message: str, phi: float, shortfall: float):
+        self.phi = phi
+        self.shortfall = shortfall
+        super().__init__(message)
+
+
+class IntegrationError(DynamicsError):
+    """An integration of the equation of motion that is stiff, diverges or takes too long."""

@@ -54,6 +54,7 @@ if TYPE_CHECKING:
     import networkx as nx
 
     from .cams import CamRef
+    from .cycle import CycleLoad
 
 __all__ = [
     "DRIVER_KEYS",
@@ -659,6 +660,8 @@ class Mechanism:
     loads: tuple[Load, ...] = ()
     #: the ``cam`` statements: the higher pairs whose cam has a profile (:mod:`structure.cams`)
     cams: tuple[CamRef, ...] = ()
+    #: the drive and the loads over the cycle (``drive``, ``cycle`` lines: :mod:`structure.cycle`)
+    cycle_loads: tuple[CycleLoad, ...] = ()
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
     shared_hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
@@ -743,6 +746,7 @@ class Mechanism:
             "source": self.source,
             "loads": self.loads,
             "cams": self.cams,
+            "cycle_loads": self.cycle_loads,
         }
         fields.update(changes)
         if "drivers" in changes:

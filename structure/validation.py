@@ -366,6 +366,7 @@ def validated(m: Mechanism, ground_line: int = 0) -> Mechanism:
         *_connection_problems(m, ground_line),
         *_driver_problems(m),
         *_load_problems(m),
+        *_cycle_load_problems(m),
         *_point_problems(m),
         *_cam_problems(m),
     ]
@@ -475,6 +476,30 @@ def _load_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
             yield EdgeListProblem(load.line_no, load.statement, reason)
         elif load.link == m.ground and load.kind is not LoadKind.BALANCE:
             reason = f"a {load.kind} on the ground does nothing"
+            yield EdgeListProblem(load.line_no, load.statement, reason)
+
+
+def _cycle_load_problems(m: Mechanism) -> Iterable[EdgeListProblem]:
+    """Loads over the cycle on moving links; one drive, on a driver when drivers are named."""
+    drive_line: int | None = None
+    for load in m.cycle_loads:
+        if not m.has_link(load.link):
+            reason = f"{load.kind} on unknown link {load.link}"
+        elif load.link == m.ground:
+            reason = f"a {load.kind} on the ground does nothing"
+        elif load.kind != "drive":
+            reason = ""
+        elif drive_line is not None:
+            where = f" on line {drive_line}" if drive_line else ""
+            reason = f"the drive is already given{where}: a machine has one drive"
+        elif m.drivers and load.link not in m.driver_links:
+            drivers = ", ".join(m.driver_links)
+            reason = f"the drive acts on a driver: {load.link} is not one ({drivers})"
+        else:
+            reason = ""
+        if load.kind == "drive" and drive_line is None:
+            drive_line = load.line_no
+        if reason:
             yield EdgeListProblem(load.line_no, load.statement, reason)
 
 

@@ -180,6 +180,10 @@ ALLOWED_LOCAL_IMPORTS: dict[str, dict[str, str]] = {
     "structure.assur": {
         "networkx": "start-up: the group DAG as a networkx DiGraph is built when asked for",
     },
+    "kinematics.dynamics.machine": {
+        "kinematics.gears.trains": "start-up: a gear train without coordinates takes its ratios "
+        "from sympy's exact Willis relations; every other machine's dynamics goes without sympy",
+    },
     "structure.report": {
         "structure.readwrite": "the formatting's old path, kept for one release with a "
         "DeprecationWarning (a top-level import would be a cycle: reports reads the report)",

@@ -14,6 +14,7 @@ from structure.errors import MechanismError
 from .. import figures
 from ..figures.animation import animate, turn_inputs
 from ..figures.cam import cam_sheet
+from ..figures.dynamics import balance_sheet, dynamics_sheet
 from ..solvers.plan import make_plan
 from ..solvers.solve import solve_pose
 
@@ -21,6 +22,8 @@ if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.report import StructuralReport
 
     from ..cams.design import CamDesign
+    from ..dynamics.analysis import MachineDynamics
+    from ..dynamics.balancing import Balanced
     from ..kinetostatics.forces import ForceSolution
     from ..solvers.plan import SolvePlan
     from ..solvers.solve import KinematicState
@@ -29,6 +32,8 @@ if TYPE_CHECKING:  # pragma: no cover - annotations only
 __all__ = [
     "animate",
     "save_cam_sheet",
+    "save_balance_sheet",
+    "save_dynamics_sheet",
     "save_forces_sheet",
     "save_kinematics_sheet",
     "save_mechanism_drawing",
@@ -93,3 +98,13 @@ def save_forces_sheet(
 def save_sweep_figure(result: Sweep, plan: SolvePlan, path: str) -> None:
     """Paths, ω, ε, |v|, |a|, transmission angles and balancing over the sweep."""
     _save(path, lambda: figures.sweep_figure(result, plan))
+
+
+def save_dynamics_sheet(result: MachineDynamics, path: str) -> None:
+    """J_r(φ), M_r(φ), ω(φ), ω(t), the energy–inertia diagram and the shaking, on one sheet."""
+    _save(path, lambda: dynamics_sheet(result))
+
+
+def save_balance_sheet(result: Balanced, path: str) -> None:
+    """The shaking force before and after a balance, and the driving torque."""
+    _save(path, lambda: balance_sheet(result))

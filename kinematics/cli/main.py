@@ -43,6 +43,8 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "atlas": ("atlas", "run"),
     "report": ("report", "run_report"),
     "cam": ("cam", "run_cam"),
+    "dynamics": ("dynamics", "run_dynamics"),
+    "balance": ("dynamics", "run_balance"),
 }
 
 

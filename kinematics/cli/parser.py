@@ -344,6 +344,74 @@ def _report_arguments(command: argparse.ArgumentParser) -> None:
     _add_steps(command, 120, "poses of the animation and the plots")
 
 
+def _dynamics_arguments(command: argparse.ArgumentParser) -> None:
+    """``dynamics FILE [--delta D] [--drive LAW] [--omega W] [--steps N] [--json] ...``."""
+    _add_file(command, "edge-list file with coordinates, masses, and the drive and loads")
+    command.add_argument(
+        "--delta",
+        type=float,
+        default=0.02,
+        metavar="D",
+        help="coefficient of speed fluctuation (ω_max − ω_min)/ω_m the flywheel is for "
+        "(default 0.02)",
+    )
+    command.add_argument(
+        "--drive",
+        metavar="LAW",
+        help="the drive instead of the file's: a torque (40), motor=M0,W0 (M0·(1 − ω/W0)), "
+        "table=DEG:N·m,..., formula=EXPRESSION of phi and omega, or none",
+    )
+    _add_omega(command)
+    _add_steps(command, 360, "poses")
+    _add_json(command)
+    _add_plot(command, "draw J_r(φ), M_r(φ), ω(φ), the energy–inertia diagram, the shaking")
+    _add_explain(command)
+
+
+def _add_omega(command: argparse.ArgumentParser) -> None:
+    """``--omega W``: the mean running speed, where the file's ``omega=`` does not say it."""
+    command.add_argument(
+        "--omega",
+        type=float,
+        metavar="W",
+        help="the mean speed, rad/s (default the driver's omega=)",
+    )
+
+
+def _balance_arguments(command: argparse.ArgumentParser) -> None:
+    """``balance FILE [-o OUT] [--method M] [--radius R] [--fraction C] [--omega W] ...``."""
+    _add_file(command, "edge-list file with coordinates and masses")
+    command.add_argument(
+        "-o",
+        "--output",
+        metavar="OUT",
+        help="write the balanced mechanism (.edges or .json): counterweights as mass lines",
+    )
+    command.add_argument(
+        "--method",
+        choices=("auto", "complete", "primary", "static"),
+        default="auto",
+        help="complete (a four-bar, Berkof–Lowen), primary (a crank–slider), static (each "
+        "link pinned to the frame); auto chooses (default)",
+    )
+    command.add_argument(
+        "--radius",
+        type=float,
+        metavar="R",
+        help="each counterweight's distance from its pivot, m (default the link's length)",
+    )
+    command.add_argument(
+        "--fraction",
+        type=float,
+        default=0.5,
+        metavar="C",
+        help="primary: the part of the reciprocating mass the crank takes (default 0.5)",
+    )
+    _add_omega(command)
+    _add_json(command)
+    _add_plot(command, "draw the shaking force's polar plot before and after")
+
+
 #: every command, in the order ``assur --help`` lists them: name, help line, its arguments
 COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...] = (
     (
@@ -387,6 +455,12 @@ COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...]
         "worked solution",
         _report_arguments,
     ),
+    (
+        "dynamics",
+        "reduced inertia and moment, steady running, flywheel, start-up, run-down, shaking",
+        _dynamics_arguments,
+    ),
+    ("balance", "counterweights that balance the shaking force", _balance_arguments),
 )
 
 

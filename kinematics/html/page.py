@@ -25,6 +25,7 @@ from .animation import animation_html
 from .camdesign import cams_html
 from .contents import ReportContents, part_note
 from .cycle import inputs_text
+from .dynamics import dynamics_html
 from .gearing import gears_html
 from .markup import element, note
 from .phrases import say
@@ -111,6 +112,7 @@ SECTIONS: tuple[tuple[str, str, Callable[[ReportContents, str], str]], ...] = (
     ("gears", "s_gears", _gears_section),
     ("worked", "s_worked", _worked_html),
     ("cams", "s_cams", cams_html),
+    ("dynamics", "s_dynamics", dynamics_html),
 )
 
 

@@ -28,6 +28,7 @@ _ENGLISH: dict[str, str] = {
     "s_gears": "6. Gear train",
     "s_worked": "7. Worked solution, step by step",
     "s_cams": "8. Cam design",
+    "s_dynamics": "8. Machine dynamics: steady running, flywheel, shaking",
     # the one-line notes of a section that does not apply
     "no_geometry": "Not applicable: the file gives no point coordinates.",
     "no_loads": "Not applicable: the file gives no loads (force, moment or mass lines).",
@@ -162,6 +163,7 @@ _VIETNAMESE: dict[str, str] = {
     "s_gears": "6. Hệ bánh răng",
     "s_worked": "7. Lời giải chi tiết từng bước",
     "s_cams": "8. Thiết kế cơ cấu cam",
+    "s_dynamics": "8. Động lực học máy: chuyển động bình ổn, bánh đà, lực rung",
     "no_geometry": "Không áp dụng: tệp không cho tọa độ các điểm.",
     "no_loads": "Không áp dụng: tệp không cho ngoại lực (lực, mômen hay khối lượng).",
     "no_gears": "Không áp dụng: cơ cấu không có hệ bánh răng.",

@@ -24,10 +24,12 @@ direction), ``span=S``, ``friction=F``; ``flat=L``, ``roller=L``,
 ``centers=O1,O2``, ``normal=DEG`` (H), and for a gear mesh the word ``gear``
 with ``z=ZA,ZB``, ``internal=L``, ``module=M``. Loads: ``force LINK POINT fx
 fy``, ``moment LINK M``, ``mass LINK m J S``, ``gravity gx gy``, ``balance
-LINK POINT angle=DEG``. A cam with a profile: ``cam CAM LINK FILE [at=DEG]``
-(:mod:`structure.readwrite.camfile`). The words ``name``, ``ground``,
-``driver``, ``point``, ``cam`` and the load words are reserved at the start of
-a line (unless the third word is a pair kind).
+LINK POINT angle=DEG``; over the cycle (:mod:`structure.cycle`): ``drive LINK
+LAW``, ``cycle moment LINK LAW``, ``cycle force LINK POINT angle=DEG LAW``. A cam
+with a profile: ``cam CAM LINK FILE [at=DEG]`` (:mod:`structure.readwrite.camfile`).
+The words ``name``, ``ground``, ``driver``, ``point``, ``cam``, ``drive``,
+``cycle`` and the load words are reserved at the start of a line (unless the
+third word is a pair kind).
 
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> m.driver_links, len(m.pairs)
@@ -51,6 +53,7 @@ from pathlib import Path
 from typing import Any
 
 from ..cams import CamRef
+from ..cycle import CycleLoad, cycle_load_from_tokens
 from ..errors import EdgeListError, EdgeListProblem, NumberError, StatementError
 from ..expressions import read_number
 from ..kinds import LoadKind, PairKind
@@ -88,7 +91,9 @@ __all__ = [
 ]
 
 #: the words that start a statement other than a pair (``name`` starts a title)
-_STATEMENTS = frozenset(("ground", "driver", "point", "cam", *(k.value for k in LoadKind)))
+_STATEMENTS = frozenset(
+    ("ground", "driver", "point", "cam", "drive", "cycle", *(k.value for k in LoadKind))
+)
 _KIND_OF = {k.value: k for k in PairKind}
 
 
@@ -146,7 +151,8 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         found.name,
         source,
         tuple(found.loads),
-        tuple(found.cams),
+        cams=tuple(found.cams),
+        cycle_loads=tuple(found.cycle_loads),
     )
     return validated(mechanism, ground_line=found.ground_line)
 
@@ -162,6 +168,7 @@ class _Statements:
     drivers: list[Driver] = field(default_factory=list)
     points: dict[str, PointDef] = field(default_factory=dict)
     loads: list[Load] = field(default_factory=list)
+    cycle_loads: list[CycleLoad] = field(default_factory=list)
     problems: list[EdgeListProblem] = field(default_factory=list)
     cams: list[CamRef] = field(default_factory=list)
     #: where the description comes from: a cam's program file is read beside it
@@ -182,6 +189,8 @@ class _Statements:
             self._add_point(_point(tokens, line_no))
         elif head == "cam":
             self.cams.append(cam_from_tokens(tokens, line_no, self.source))
+        elif head in ("drive", "cycle"):
+            self.cycle_loads.append(cycle_load_from_tokens(tokens, line_no))
         else:
             self.loads.append(_load(tokens, line_no))
 
@@ -490,6 +499,7 @@ def write_edgelist(mechanism: Mechanism) -> str:
     out.extend(p.statement for p in mechanism.points.values())
     out.extend(load.statement for load in mechanism.loads)
     out.extend(_cam_statement(mechanism, ref) for ref in mechanism.cams)
+    out.extend(load.statement for load in mechanism.cycle_loads)
     return "\n".join(out) + "\n"
 
 

@@ -23,6 +23,7 @@ import math
 import sys
 from typing import Any
 
+from ..cycle import CycleLoad, cycle_load_from_dict, cycle_load_to_dict
 from ..errors import EdgeListError, EdgeListProblem, NumberError, StatementError
 from ..expressions import read_number
 from ..kinds import LoadKind
@@ -48,7 +49,7 @@ __all__ = [
     "mechanism_to_json",
 ]
 
-_TOP_KEYS = ("name", "ground", "drivers", "pairs", "points", "loads", "cams")
+_TOP_KEYS = ("name", "ground", "drivers", "pairs", "points", "loads", "cams", "drive", "cycle")
 _PAIR_FIELDS = (
     "links",
     "kind",
@@ -196,12 +197,20 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
     points = _read_points(data.get("points", {}), problems)
     loads = _read_loads(data.get("loads", []), problems)
     cams = _read_cams(data.get("cams", []), source, problems)
+    cycle_loads = _read_cycle_loads(data.get("drive"), data.get("cycle", []), problems)
     if problems:
         raise EdgeListError(source, problems)
     mechanism = Mechanism(
-        tuple(pairs), _text(ground), tuple(drivers), points, name, source, tuple(loads),
-        tuple(cams),
-    )  # fmt: skip
+        tuple(pairs),
+        _text(ground),
+        tuple(drivers),
+        points,
+        name,
+        source,
+        tuple(loads),
+        cams=tuple(cams),
+        cycle_loads=tuple(cycle_loads),
+    )
     return validated(mechanism)
 
 
@@ -452,6 +461,22 @@ def _read_cams(raw: Any, source: str, problems: _Problems) -> list:
     return cams
 
 
+def _read_cycle_loads(drive: Any, raw: Any, problems: _Problems) -> list[CycleLoad]:
+    """The ``drive`` object and the ``cycle`` list (:mod:`structure.cycle`)."""
+    out: list[CycleLoad] = []
+    items = [] if drive is None else [("drive", "drive", drive)]
+    if not isinstance(raw, list):
+        problems.add("cycle", "must be a list")
+    else:
+        items += [("cycle", f"cycle[{i}]", item) for i, item in enumerate(raw)]
+    for kind, where, item in items:
+        try:
+            out.append(cycle_load_from_dict(kind, item))
+        except StatementError as exc:
+            problems.add(where, exc.reason)
+    return out
+
+
 def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
     """The JSON-shaped dict of ``mechanism`` (inverse of :func:`mechanism_from_dict`)."""
     out: dict[str, Any] = {}
@@ -503,6 +528,11 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
         ]
     if mechanism.cams:
         out["cams"] = [cam_to_item(ref) for ref in mechanism.cams]
+    for load in mechanism.cycle_loads:
+        if load.kind == "drive":
+            out["drive"] = cycle_load_to_dict(load)
+        else:
+            out.setdefault("cycle", []).append(cycle_load_to_dict(load))
     if mechanism.points:
         out["points"] = {}
         for p in mechanism.points.values():

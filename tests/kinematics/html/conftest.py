@@ -29,7 +29,17 @@ STEPS = 24
 STEMS = sorted(path.stem for path in FIXTURES.glob("*.edges"))
 #: the fixtures with point coordinates: their reports draw, solve and animate
 SKETCHED = [stem for stem in STEMS if read_edgelist(str(FIXTURES / f"{stem}.edges")).points]
-SECTION_IDS = ["mechanism", "structure", "kinematics", "forces", "cycle", "gears", "worked", "cams"]
+SECTION_IDS = [
+    "mechanism",
+    "structure",
+    "kinematics",
+    "forces",
+    "cycle",
+    "gears",
+    "worked",
+    "cams",
+    "dynamics",
+]
 #: the fixtures whose pages the default run checks, one of each kind of page: no coordinates,
 #: a whole turn, a stretch, loads, inertia, a triad, two drivers, a cam, gears; every other
 #: fixture's page is checked by the slow run (python -m pytest -m slow), as CI does

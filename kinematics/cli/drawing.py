@@ -31,8 +31,8 @@ if TYPE_CHECKING:  # pragma: no cover - annotations only
 
 __all__ = [
     "animate",
-    "save_cam_sheet",
     "save_balance_sheet",
+    "save_cam_sheet",
     "save_dynamics_sheet",
     "save_forces_sheet",
     "save_kinematics_sheet",

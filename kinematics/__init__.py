@@ -46,7 +46,14 @@ _PUBLIC_BY_MODULE = {
         "forces_over",
         "solve_forces",
     ),
-    "solvers.exact": ("ExactForces", "ExactState", "forces_exact", "solve_exact"),
+    "solvers.exact": (
+        "EXACT_TIMEOUT",
+        "ExactForces",
+        "ExactState",
+        "ExactTimeoutError",
+        "forces_exact",
+        "solve_exact",
+    ),
     "kinetostatics.inertia": ("reduced_inertia_over",),
     "kinetostatics.polygons": ("Term", "VectorEquation", "vector_equations"),
     "results.serialization": (

@@ -163,8 +163,10 @@ class _Clock:
             signal.setitimer(signal.ITIMER_REAL, max(self.end - time.monotonic(), 1e-3), 0.2)
             yield
         finally:
-            signal.setitimer(signal.ITIMER_REAL, 0.0)
-            signal.signal(signal.SIGALRM, previous)
+            try:
+                signal.setitimer(signal.ITIMER_REAL, 0.0)
+            finally:  # even when the last alarm rings here: the caller's handler back
+                signal.signal(signal.SIGALRM, previous)
 
 
 # ------------------------------------------------------------------------------ the data

@@ -279,11 +279,26 @@ def test_the_command_of_the_issue_finishes(tmp_path, capsys):
     assert "x (10⁻³⁰³ m)" in svg  # matplotlib writes each text in a comment beside its glyphs
 
 
+#: what the solvers cannot do yet at these scales (issue 22, item 4; found here)
+SOLVER_LIMITS = {
+    ("jansen", 1e100): "its sweep takes minutes (a false branch change)",
+    ("jansen", 1e150): "its sweep takes minutes (a false branch change)",
+    ("crank_slider", 1e-302): "ZeroDivisionError in solvers/frames.py (exit 3)",
+    ("crank_slider", 1e100): "its sweep takes minutes",
+}
+
+
+def _broad_cases():
+    for stem in ("fourbar", "cam_roller_follower", "gear_pair", "ch3_3_4_fourbar", "jansen",
+                 "crank_slider"):  # fmt: skip
+        for factor in FACTORS:
+            why = SOLVER_LIMITS.get((stem, factor))
+            marks = [pytest.mark.xfail(reason=f"the solvers: {why}", run=False)] if why else []
+            yield pytest.param(stem, factor, marks=marks, id=f"{stem}-{factor:g}")
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("factor", FACTORS)
-@pytest.mark.parametrize(
-    "stem", ["fourbar", "cam_roller_follower", "gear_pair", "ch3_3_4_fourbar", "jansen"]
-)
+@pytest.mark.parametrize(("stem", "factor"), list(_broad_cases()))
 def test_every_command_that_draws_finishes_and_draws(stem, factor, tmp_path, capsys):
     """Broad: the commands that draw, on a few fixtures at the scales of the issue.
 

@@ -285,6 +285,7 @@ SOLVER_LIMITS = {
     ("jansen", 1e150): "its sweep takes minutes (a false branch change)",
     ("crank_slider", 1e-302): "ZeroDivisionError in solvers/frames.py (exit 3)",
     ("crank_slider", 1e100): "its sweep takes minutes",
+    ("ch3_3_4_fourbar", 1e100): "its sweep takes minutes (confirm_branches)",
 }
 
 

@@ -28,6 +28,7 @@ from kinematics.solvers.exact import forces_exact, solve_exact
 from kinematics.solvers.plan import make_plan
 from kinematics.solvers.solve import solve_pose
 from structure import analyze, parse_edgelist, read_edgelist
+from structure.errors import MechanismError
 
 from ...conftest import FIXTURES
 
@@ -375,8 +376,6 @@ def test_symbolic_speeds_stay_symbols():
 @pytest.mark.parametrize("path", sorted(FIXTURES.glob("*.edges")), ids=lambda p: p.stem)
 def test_every_fixture_gives_an_exact_answer_or_a_named_error(path):
     """Within the default limit, forces too; the times are in benchmarks/exact_speed.py."""
-    from structure.errors import MechanismError
-
     try:
         plan = plan_of(path)
     except MechanismError:

@@ -37,6 +37,7 @@ __all__ = [
     "BranchChangeError",
     "CamGeometryError",
     "DynamicsError",
+    "ExactTimeoutError",
     "IndeterminateError",
     "IntegrationError",
     "NoSteadyRunningError",
@@ -160,6 +161,19 @@ class SingularPoseError(MechanismError):
 
 class IndeterminateError(MechanismError):
     """Reactions of an over-constrained mechanism (r > 0) are statically indeterminate."""
+
+
+class ExactTimeoutError(MechanismError):
+    """An exact answer (``--exact``) ran past its time limit.
+
+    ``stage`` names what it was working on (a group such as ``'group II(2,3)'``),
+    ``limit`` the limit in seconds.
+    """
+
+    def __init__(self, message: str, stage: str = "", limit: float = 0.0):
+        self.stage = stage
+        self.limit = limit
+        super().__init__(message)
 
 
 class SweepSizeError(MechanismError):

@@ -17,7 +17,7 @@ from structure.report import analyze
 from ..explain.worked import explain_forces
 from ..kinetostatics.forces import solve_forces
 from ..results.serialization import exact_forces_to_dict, forces_to_dict
-from ..solvers.exact import forces_exact
+from ..solvers.exact import EXACT_TIMEOUT, forces_exact
 from ..solvers.plan import make_plan
 from .output import EXIT_OK, check_finite, failed, print_json, title_lines, vector, write_lines
 from .plotting import check_plot, load_drawing
@@ -41,7 +41,7 @@ def run_forces(args: argparse.Namespace) -> int:
             numeric = solve_forces(plan, minimum_norm=args.minimum_norm)
             load_drawing().save_forces_sheet(report, plan, numeric, args.plot)
         if args.exact:
-            return _print_exact_forces(report, make_plan(report), args.json)
+            return _print_exact_forces(report, make_plan(report), args.json, args.exact_timeout)
         result = solve_forces(make_plan(report), minimum_norm=args.minimum_norm)
         check_finite(forces_to_dict(result))
     except MechanismError as exc:
@@ -89,9 +89,16 @@ def _forces_lines(report: StructuralReport, result: ForceSolution) -> list[str]:
     return out
 
 
-def _print_exact_forces(report: StructuralReport, plan: SolvePlan, as_json: bool) -> int:
-    """Print the exact reactions and balancing moment at the sketch pose (sympy)."""
-    result = forces_exact(plan)
+def _print_exact_forces(
+    report: StructuralReport, plan: SolvePlan, as_json: bool, timeout: float | None
+) -> int:
+    """Print the exact reactions and balancing moment at the sketch pose (sympy).
+
+    Nothing is printed before the whole answer is known (a time limit leaves no half answer).
+    """
+    result = forces_exact(plan, timeout=EXACT_TIMEOUT if timeout is None else timeout)
+    for note in result.approximations:  # what is not exact, on stderr
+        sys.stderr.write(f"note: {note}\n")
     if as_json:
         print_json(exact_forces_to_dict(result))
         return EXIT_OK

@@ -18,7 +18,7 @@ from structure.report import analyze
 
 from ..explain.worked import explain_kinematics
 from ..results.serialization import exact_to_dict, state_to_dict
-from ..solvers.exact import solve_exact
+from ..solvers.exact import EXACT_TIMEOUT, solve_exact
 from ..solvers.plan import make_plan
 from ..solvers.solve import solve_pose
 from ..solvers.sweep import read_inputs, sweep
@@ -51,7 +51,10 @@ def run_kinematics(args: argparse.Namespace) -> int:
         report = analyze(read_edgelist(args.file))
         plan = make_plan(report, flip=args.flip)
         if args.exact:
-            return _print_exact(report, plan, args.json)
+            if args.flip:
+                return fail("--exact answers at the sketch's assembly: it cannot take --flip",
+                            EXIT_USAGE)  # fmt: skip
+            return _print_exact(report, plan, args.json, args.exact_timeout)
         state = solve_pose(plan)
         check_finite(state_to_dict(state))
         if args.plot:
@@ -106,9 +109,16 @@ def _kinematics_lines(
     return out
 
 
-def _print_exact(report: StructuralReport, plan: SolvePlan, as_json: bool) -> int:
-    """Print the exact velocities and accelerations at the sketch pose (sympy)."""
-    state = solve_exact(plan)
+def _print_exact(
+    report: StructuralReport, plan: SolvePlan, as_json: bool, timeout: float | None
+) -> int:
+    """Print the exact velocities and accelerations at the sketch pose (sympy).
+
+    Nothing is printed before the whole answer is known (a time limit leaves no half answer).
+    """
+    state = solve_exact(plan, timeout=EXACT_TIMEOUT if timeout is None else timeout)
+    for note in state.approximations:  # what is not exact, on stderr
+        sys.stderr.write(f"note: {note}\n")
     if as_json:
         print_json(exact_to_dict(state))
         return EXIT_OK

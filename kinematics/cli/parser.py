@@ -9,6 +9,7 @@ plus its runner in :data:`kinematics.cli.main.RUNNERS`.
 from __future__ import annotations
 
 import argparse
+import math
 from collections.abc import Callable
 
 from structure.explain.document import FORMATS, LANGUAGES
@@ -39,10 +40,27 @@ def _add_json(command: argparse.ArgumentParser) -> None:
 
 
 def _add_exact(command: argparse.ArgumentParser) -> None:
-    """``--exact``: exact values with sympy."""
+    """``--exact``: exact values with sympy; ``--exact-timeout``: how long they may take."""
     command.add_argument(
         "--exact", action="store_true", help="exact values (radicals, fractions) with sympy"
     )
+    command.add_argument(
+        "--exact-timeout",
+        type=_seconds,
+        metavar="SECONDS",
+        help="give up --exact after this many seconds (default 60)",
+    )
+
+
+def _seconds(text: str) -> float:
+    """A time limit: a positive number of seconds, at most a day."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not 0 < value <= 86400:
+        raise argparse.ArgumentTypeError(f"expected seconds in (0, 86400], not {text!r}")
+    return value
 
 
 def _add_plot(command: argparse.ArgumentParser, draws: str) -> None:

@@ -41,7 +41,7 @@ from ..solvers.plan import SolvePlan
 from ..solvers.solve import Motion, solve_poses
 from ..solvers.sweep import Sweep
 from .scene import Scene, draw_scene
-from .style import Poses
+from .style import Poses, unit_text
 
 __all__ = ["animate", "turn_inputs"]
 
@@ -209,8 +209,8 @@ def _first_frame(
     ax.legend(  # below the axes, where no link passes over it
         handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=7
     )
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    ax.set_xlabel(f"x ({unit_text(scene.unit)})")
+    ax.set_ylabel(f"y ({unit_text(scene.unit)})")
     title = ax.set_title(name, fontsize=9)
     fig.tight_layout()
     fig.set_layout_engine(None)  # laid out once: no layout pass (and second draw) per frame
@@ -258,20 +258,24 @@ def _hide_absent_virtual_links(scene: Scene, motion: Motion) -> list:
 
 
 def _fit_to_motion(ax: Axes, scene: Scene, plan: SolvePlan, motion: Motion) -> None:
-    """Fix the limits to the whole motion, and trace the paths of the moving points faintly."""
+    """Fix the limits to the whole motion, and trace the paths of the moving points faintly.
+
+    The scene draws in its unit (``scene.unit`` metres): the motion is divided by it.
+    """
     reach = []
     for link, sketch in scene.anchors:
         q = motion.q.get(link)
         if q is None:
             continue
         cos, sin = np.cos(q[:, 2])[:, None], np.sin(q[:, 2])[:, None]
-        x = q[:, 0:1] + cos * sketch[None, :, 0] - sin * sketch[None, :, 1]
-        y = q[:, 1:2] + sin * sketch[None, :, 0] + cos * sketch[None, :, 1]
+        x = q[:, 0:1] / scene.unit + cos * sketch[None, :, 0] - sin * sketch[None, :, 1]
+        y = q[:, 1:2] / scene.unit + sin * sketch[None, :, 0] + cos * sketch[None, :, 1]
         reach.append(np.column_stack([x.ravel(), y.ravel()]))
     for name, (link, c) in plan.points.items():
         if link not in motion.q:
             continue
         xy, _, _ = motion.point(link, np.asarray(c, dtype=float))
+        xy = xy / scene.unit
         reach.append(xy)
         if float(np.ptp(xy, axis=0).max()) > 1e-9 * scene.size:
             ax.plot(xy[:, 0], xy[:, 1], lw=0.8, color="0.6", alpha=0.6, gid=f"trace:{name}")

@@ -23,7 +23,7 @@ from matplotlib.figure import Figure
 from ..kinetostatics.forces import ForceSolution
 from ..solvers.plan import SolvePlan
 from ..solvers.solve import KinematicState, solve_pose
-from .style import nice_scale, place, point_xy, state_poses
+from .style import drawing_unit, length, nice_scale, place, point_xy, state_poses
 
 __all__ = ["draw_loads", "force_polygon", "polygon_entries"]
 
@@ -71,8 +71,8 @@ def _forces_on(
     if with_balance:
         _add_balancing(out, plan, solution, links)
     total = sum((f.vector for f in out), np.zeros(2))
-    biggest = max((float(np.hypot(*f.vector)) for f in out), default=0.0)
-    if float(np.hypot(*total)) > 1e-7 * max(biggest, 1e-12):
+    biggest = max((length(f.vector) for f in out), default=0.0)
+    if length(total) > 1e-7 * biggest:
         _add(out, "rest", "rest (friction)", -total, "rest")
     return out
 
@@ -161,8 +161,8 @@ def _add_balancing(
 
 def _draw_forces(ax: Axes, forces: list[_Force], scale: float | None, what: str, note: str) -> None:
     """The forces head to tail from the origin, to scale, their sizes below the axes."""
-    biggest = max((float(np.hypot(*f.vector)) for f in forces), default=0.0)
-    shown = [f for f in forces if float(np.hypot(*f.vector)) > 1e-9 * max(biggest, 1e-12)]
+    biggest = max((length(f.vector) for f in forces), default=0.0)
+    shown = [f for f in forces if length(f.vector) > 1e-9 * biggest]
     if scale is None:
         scale = nice_scale(biggest / 100.0) if biggest > 0 else 1.0
     if not scale > 0:
@@ -335,13 +335,14 @@ def draw_loads(ax: Axes, plan: SolvePlan, state: KinematicState) -> None:
     """The applied forces on the mechanism: an arrow ending at each load's point (gid ``load:``)."""
     m = plan.mechanism
     poses = state_poses(state)
+    unit = drawing_unit(plan.length)  # the mechanism's drawing unit (kinematics.figures.scene)
     forces = [x for x in m.loads if x.kind == "force" and point_xy(m, x.point) is not None]
-    biggest = max((float(np.hypot(*x.values)) for x in forces), default=0.0)
+    biggest = max((length(x.values) for x in forces), default=0.0)
     if biggest <= 0:
         return
-    reach = 0.25 * (plan.length or 1.0)
+    reach = 0.25 * (plan.length or 1.0) / unit
     for load in forces:
-        tip = place(poses, load.link, point_xy(m, load.point))
+        tip = place(poses, load.link, point_xy(m, load.point)) / unit
         tail = tip - np.asarray(load.values, dtype=float) / biggest * reach
         ax.annotate(
             "",

@@ -9,7 +9,8 @@ at the state's pose, fitted to the axes with equal scales, titled with the
 mechanism's name. The legend has one entry per Assur group
 (``"II(2,3) RRR, order 2"``) in the group's colour, then one per driver
 (``"driver 1"``) in black, then a dashed ``"virtual link"`` entry when
-higher pairs were replaced.
+higher pairs were replaced. A mechanism far from metres is drawn in a power of
+1000 of the metre, named on the axes (``x (10⁻³⁰³ m)``).
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from structure.report import StructuralReport
 from ..solvers.plan import SolvePlan
 from ..solvers.solve import KinematicState
 from .scene import draw_scene
-from .style import figure_axes, state_poses
+from .style import figure_axes, state_poses, unit_text
 
 __all__ = ["draw_mechanism"]
 
@@ -51,13 +52,13 @@ def draw_mechanism(
     Figure
     """
     fig, ax = figure_axes(ax)
-    _, handles = draw_scene(report, plan, ax, state_poses(state))
+    scene, handles = draw_scene(report, plan, ax, state_poses(state))
     ax.legend(handles=handles, loc="best", fontsize=8)
     ax.relim()
     ax.set_aspect("equal", adjustable="datalim")
     ax.autoscale_view()
     ax.margins(0.1)
     ax.set_title(getattr(plan.mechanism, "name", "") or "")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    ax.set_xlabel(f"x ({unit_text(scene.unit)})")
+    ax.set_ylabel(f"y ({unit_text(scene.unit)})")
     return fig

@@ -29,7 +29,7 @@ from structure.model import PairKind
 from ..kinetostatics.polygons import Term, point_motion, vector_equations
 from ..solvers.plan import SolvePlan
 from ..solvers.solve import KinematicState
-from .style import figure_axes, nice_scale
+from .style import figure_axes, length, nice_scale
 
 __all__ = ["acceleration_polygon", "velocity_polygon"]
 
@@ -85,9 +85,10 @@ def _construction(
     """The dyads' relative terms head to tail, the points they need, the links' images."""
     out = _Construction()
     pts = {n: ps for n, ps in state.points.items() if n in vectors}
-    size = max([1e-12] + [float(np.linalg.norm(ps.position)) for ps in pts.values()])
-    speed = max([1e-12] + [float(np.linalg.norm(ps.velocity)) for ps in pts.values()])
-    accel = max([1e-12] + [float(np.linalg.norm(ps.acceleration)) for ps in pts.values()])
+    # the largest of each kind: what "the same" is measured against (0 when all are 0)
+    size = max((length(ps.position) for ps in pts.values()), default=0.0)
+    speed = max((length(ps.velocity) for ps in pts.values()), default=0.0)
+    accel = max((length(ps.acceleration) for ps in pts.values()), default=0.0)
 
     derived: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}  # where, v, a
 
@@ -97,9 +98,9 @@ def _construction(
 
         def same(p: np.ndarray, pv: np.ndarray, pa: np.ndarray) -> bool:
             return bool(
-                np.linalg.norm(p - where) <= 1e-9 * size
-                and np.linalg.norm(pv - v) <= 1e-9 * speed
-                and np.linalg.norm(pa - a) <= 1e-9 * accel
+                length(p - where) <= 1e-9 * size
+                and length(pv - v) <= 1e-9 * speed
+                and length(pa - a) <= 1e-9 * accel
             )
 
         for name, ps in pts.items():
@@ -121,7 +122,7 @@ def _construction(
             image(chain.start, chain.start_link, chain.start_where)
             at = chain.origin
             small = 1e-9 * (speed if order == 1 else accel)
-            nonzero = all(np.linalg.norm(t.vector) > small for t in chain.terms)
+            nonzero = all(length(t.vector) > small for t in chain.terms)
             for k, term in enumerate(chain.terms):
                 out.components.append(
                     _Component(_term_gid(term), _term_text(term), at, term.vector, term.sup)
@@ -164,11 +165,9 @@ def _polygon(
     derived = set(extra.images)
     corners_phys = [*vectors.values()]
     corners_phys += [c.tail + c.vector for c in extra.components] + [n[2] for n in extra.nodes]
-    biggest = max((float(np.linalg.norm(v)) for v in corners_phys), default=0.0)
-    absolute = max((float(np.linalg.norm(v)) for v in vectors.values()), default=0.0)
-    shown = {
-        n: v for n, v in vectors.items() if float(np.linalg.norm(v)) > 1e-9 * max(absolute, 1e-12)
-    }
+    biggest = max((length(v) for v in corners_phys), default=0.0)
+    absolute = max((length(v) for v in vectors.values()), default=0.0)
+    shown = {n: v for n, v in vectors.items() if length(v) > 1e-9 * absolute}
     if scale is None:
         scale = nice_scale(biggest / 100.0) if biggest > 0 else 1.0
     if not scale > 0:
@@ -220,9 +219,9 @@ def _draw_pole_vectors(
             },
             gid=f"arrow:{name}",
         )
-        same = sum(1 for t in placed if np.linalg.norm(t - tip) <= 1e-6 * extent)
+        same = sum(1 for t in placed if length(t - tip) <= 1e-6 * extent)
         placed.append(tip)
-        d = tip / (np.linalg.norm(tip) or 1.0) * nudge * (1 + 1.5 * same)  # coincident tips
+        d = tip / (length(tip) or 1.0) * nudge * (1 + 1.5 * same)  # coincident tips
         ax.text(
             tip[0] + d[0],
             tip[1] + d[1],
@@ -272,12 +271,20 @@ def _draw_components(
     """Each term an arrow from its tail (a dot when zero) with its label; the corners drawn."""
     corners: list[np.ndarray] = []
     labels: list[np.ndarray] = []
-    longest = max((float(np.linalg.norm(c.vector)) for c in extra.components), default=0.0)
-    zero = 1e-9 * max(absolute, longest, 1e-12)
+    longest = max((length(c.vector) for c in extra.components), default=0.0)
+    zero = 1e-9 * max(absolute, longest)
 
     def spot(anchor: np.ndarray, away: np.ndarray) -> np.ndarray:
+        """``anchor + away``, moved on by ``away`` while it sits on a label placed before.
+
+        ``away`` is about ``nudge`` long and a label keeps 1.2·nudge clear, so each label
+        placed before can hold it back a few steps at most: the steps are bounded by
+        their count, whatever the numbers (issue 22: a tiny polygon looped here).
+        """
         at = anchor + away
-        while any(np.linalg.norm(at - q) < 1.2 * nudge for q in labels):
+        for _ in range(4 * len(labels)):
+            if not any(length(at - q) < 1.2 * nudge for q in labels):
+                break
             at = at + away
         labels.append(at)
         return at
@@ -287,7 +294,7 @@ def _draw_components(
         tail = c.tail / scale
         tip = (c.tail + c.vector) / scale
         corners += [tail, tip]
-        if float(np.linalg.norm(c.vector)) <= zero:
+        if length(c.vector) <= zero:
             ax.plot([tail[0]], [tail[1]], "o", mfc="none", mec=colour, ms=5, gid=c.gid)
             at = spot(tail, np.array([1.2, -1.0]) * nudge)
             text = _zero_text(c.text)

@@ -19,6 +19,11 @@ as a dot (gid ``contact:<point>``). Markers are dots (gid
 (``"II(2,3) RRR, order 2"``) in the group's colour, then one per driver
 (``"driver 1"``) in black, then a dashed ``"virtual link"`` entry when
 higher pairs were replaced (:func:`kinematics.figures.style.palette`).
+
+The scene draws in the drawing unit of :func:`kinematics.figures.style.drawing_unit`
+(``Scene.unit`` metres: 1 for any ordinary mechanism, 10⁻³⁰³ for one 1e-302 m
+across, which matplotlib could not draw in metres); :meth:`Scene.update` takes
+the poses in metres.
 """
 
 from __future__ import annotations
@@ -26,6 +31,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from types import MappingProxyType
 
 import numpy as np
 from matplotlib.axes import Axes
@@ -42,9 +48,10 @@ from .style import (
     DRIVER_COLOUR,
     OTHER_COLOUR,
     Poses,
+    drawing_unit,
+    length,
     palette,
     place,
-    point_xy,
     virtual_links,
 )
 
@@ -57,18 +64,33 @@ def _turn(poses: Poses, link: str) -> float:
     return 0.0 if q is None else float(q[2])
 
 
-def _sketch(plan: SolvePlan, name: str | None) -> np.ndarray | None:
-    """The sketch coordinates of point ``name``, or of the plan's point of that name."""
-    if name is None:
-        return None
-    xy = plan.mechanism.coordinates(name)
-    if xy is None and name in plan.points:
-        return np.asarray(plan.points[name][1], dtype=float)
-    return None if xy is None else np.asarray(xy, dtype=float)
+@dataclass(frozen=True)
+class _Sketch:
+    """The named points of the sketch in drawing units (``unit`` metres each)."""
+
+    unit: float
+    xy: Mapping[str, np.ndarray]
+
+    def at(self, name: str | None) -> np.ndarray | None:
+        """Point ``name`` in drawing units (None: no name, or no coordinates)."""
+        return None if name is None else self.xy.get(name)
 
 
-def _link_points(plan: SolvePlan, link: str, virtual: set[str]) -> dict[str, np.ndarray]:
-    """The named sketch points of ``link``: its pair points and its markers.
+def _sketch_in_units(report: StructuralReport, plan: SolvePlan, unit: float) -> _Sketch:
+    """Every named point of the plan's and the report's mechanisms and of the plan, in units."""
+    xy: dict[str, np.ndarray] = {}
+    for m in (report.mechanism, plan.mechanism):
+        for name, p in m.points.items():
+            xy.setdefault(name, np.array([p.x, p.y], dtype=float) / unit)
+    for name, (_, c) in plan.points.items():
+        xy.setdefault(name, np.asarray(c, dtype=float) / unit)
+    return _Sketch(unit, MappingProxyType(xy))
+
+
+def _link_points(
+    plan: SolvePlan, sketch: _Sketch, link: str, virtual: set[str]
+) -> dict[str, np.ndarray]:
+    """The named sketch points of ``link`` (drawing units): its pair points and its markers.
 
     A real link leaves out the point of a virtual link's slide along its flat
     face (that point is on the slide line, not on the link's body).
@@ -78,15 +100,15 @@ def _link_points(plan: SolvePlan, link: str, virtual: set[str]) -> dict[str, np.
     for pair in m.pairs_of(link):
         if pair.kind is PairKind.P and link not in virtual and pair.other(link) in virtual:
             continue
-        xy = _sketch(plan, pair.point)
+        xy = sketch.at(pair.point)
         if xy is not None and pair.point not in out:
             out[pair.point] = xy
-    for name, (owner, xy) in plan.points.items():
+    for name, (owner, _) in plan.points.items():
         if owner == link and name not in out:
-            out[name] = np.asarray(xy, dtype=float)
+            out[name] = sketch.xy[name]
     for name, p in m.points.items():
         if p.on == link and name not in out:
-            out[name] = np.array([p.x, p.y], dtype=float)
+            out[name] = sketch.xy[name]
     return out
 
 
@@ -136,22 +158,32 @@ class Scene:
 
     Attributes
     ----------
+    unit : float
+        The drawing unit in metres (1 unless the mechanism is far from metres).
     size : float
-        The mechanism's size (m): the scale of pins, sliders and arrows.
+        The mechanism's size in drawing units: the scale of pins, sliders and arrows.
     anchors : list of (str, ndarray)
-        Each link's sketch points (to bound a whole motion).
+        Each link's sketch points in drawing units (to bound a whole motion).
     artists : list
         The artists that move, to redraw them alone.
     virtual : dict of str to list
         The artists of each virtual link.
     """
 
-    def __init__(self, size: float) -> None:
+    def __init__(self, size: float, unit: float = 1.0) -> None:
+        self.unit = unit
         self.size = size
         self.anchors: list[tuple[str, np.ndarray]] = []
         self.artists: list = []
         self.virtual: dict[str, list] = {}
         self._moves: list[Callable[[Poses], None]] = []
+
+    def drawn(self, poses: Poses) -> dict[str, np.ndarray]:
+        """Poses ``{link: (x, y, θ)}`` in metres as poses in drawing units."""
+        return {
+            link: np.array([q[0] / self.unit, q[1] / self.unit, q[2]], dtype=float)
+            for link, q in poses.items()
+        }
 
     def follow(self, move: Callable[[Poses], None], *artists) -> None:
         """Call ``move(poses)`` on every update; it moves ``artists``."""
@@ -159,7 +191,9 @@ class Scene:
         self.artists.extend(artists)
 
     def update(self, poses: Poses) -> None:
-        """Move every artist to the links' poses ``{link: (x, y, θ)}``."""
+        """Move every artist to the links' poses ``{link: (x, y, θ)}`` (metres, radians)."""
+        if self.unit != 1.0:
+            poses = self.drawn(poses)
         for move in self._moves:
             move(poses)
 
@@ -177,54 +211,56 @@ class _Profile:
     angle: float  # 'flat': the face's direction; 'arc': from the centre to the contact (rad)
 
 
-def _pitch_circles(mechanism, pair: Pair, contact: np.ndarray | None) -> list[_Profile]:
+def _pitch_circles(
+    mechanism, sketch: _Sketch, pair: Pair, contact: np.ndarray | None
+) -> list[_Profile]:
     """Pitch circles of a gear mesh: radius m·z/2 (``module=``), else the axis–contact distance."""
     out = []
     teeth = pair.teeth or (None, None)
     for link, z in zip((pair.a, pair.b), teeth, strict=True):
-        known = pair.module * z / 2 if pair.module and z else None
+        known = pair.module * z / 2 / sketch.unit if pair.module and z else None
         pins = [
             q
             for q in mechanism.pairs_of(link)
-            if q.kind is PairKind.R and point_xy(mechanism, q.point) is not None
+            if q.kind is PairKind.R and sketch.at(q.point) is not None
         ]
         if not pins:
             continue
         if known is not None and contact is not None:
             axis = min(
-                (point_xy(mechanism, q.point) for q in pins),
-                key=lambda c: abs(float(np.hypot(*(c - contact))) - known),
+                (sketch.at(q.point) for q in pins),
+                key=lambda c: abs(length(c - contact) - known),
             )
         elif link == mechanism.ground:
             continue  # which of the frame's pivots is the gear's axis is not known
         else:
             to_ground = [q for q in pins if q.other(link) == mechanism.ground]
-            axis = point_xy(mechanism, (to_ground or pins)[0].point)
+            axis = sketch.at((to_ground or pins)[0].point)
         radius = known
         if radius is None and contact is not None:
-            radius = float(np.hypot(*(axis - contact)))
+            radius = length(axis - contact)
         if radius and radius > 0:
             out.append(_Profile(pair, link, link, "pitch", axis, radius, 0.0))
     return out
 
 
-def _profiles(report: StructuralReport, size: float) -> list[_Profile]:
-    """The contact curves of every replaced higher pair, at the sketch."""
+def _profiles(report: StructuralReport, sketch: _Sketch, size: float) -> list[_Profile]:
+    """The contact curves of every replaced higher pair, at the sketch (drawing units)."""
     m = report.mechanism
     out: list[_Profile] = []
     for r in report.replacements:
         p = r.pair
-        contact = point_xy(m, p.point)
+        contact = sketch.at(p.point)
         if p.gear:
-            out.extend(_pitch_circles(m, p, contact))
+            out.extend(_pitch_circles(m, sketch, p, contact))
             continue
         if contact is None:
             continue
         for link in (p.a, p.b):
             if r.roller is not None and link == r.roller.roller:
-                axis = point_xy(m, r.roller.axis)
+                axis = sketch.at(r.roller.axis)
                 if axis is not None:
-                    radius = float(np.hypot(*(axis - contact)))
+                    radius = length(axis - contact)
                     out.append(_Profile(p, link, r.roller.follower, "roller", axis, radius, 0.0))
                 continue
             if p.flat == link:
@@ -232,10 +268,10 @@ def _profiles(report: StructuralReport, size: float) -> list[_Profile]:
                 if face is not None:
                     out.append(_Profile(p, link, link, "flat", contact, 0.0, face))
                 continue
-            centre = point_xy(m, p.center_of(link))
+            centre = sketch.at(p.center_of(link))
             if centre is None:
                 continue
-            radius = float(np.hypot(*(centre - contact)))
+            radius = length(centre - contact)
             if radius <= 1e-9 * size:
                 continue  # a knife edge: the contact dot is its profile
             toward = math.atan2(contact[1] - centre[1], contact[0] - centre[0])
@@ -257,7 +293,8 @@ class _SceneStyle:
     colour: Mapping[str, str]  # each link's group colour (drivers black)
     ground: str
     virtual: set[str]
-    size: float
+    size: float  # drawing units
+    sketch: _Sketch
 
     @property
     def pin_radius(self) -> float:
@@ -300,15 +337,17 @@ def draw_scene(
     m = plan.mechanism
     colour, handles = palette(report)
     virtual = virtual_links(report)
-    bodies = {link: _link_points(plan, link, virtual) for link in m.moving_links}
-    size = _scene_size(plan, bodies, poses)
+    sketch = _sketch_in_units(report, plan, drawing_unit(plan.length))
+    bodies = {link: _link_points(plan, sketch, link, virtual) for link in m.moving_links}
+    scene = Scene(1.0, sketch.unit)
+    size = _scene_size(plan, sketch, bodies, scene.drawn(poses))
+    scene.size = size
     designed = {(c.pair.id, c.cam) for c in plan.cams}  # drawn from their programs below
-    profiles = [p for p in _profiles(report, size) if (p.pair.id, p.link) not in designed]
+    profiles = [p for p in _profiles(report, sketch, size) if (p.pair.id, p.link) not in designed]
     for prof in profiles:
         if prof.kind == "flat" and prof.link in bodies and prof.pair.point:
             bodies[prof.link].setdefault(prof.pair.point, prof.centre)
-    scene = Scene(size)
-    style = _SceneStyle(colour, m.ground, virtual, size)
+    style = _SceneStyle(colour, m.ground, virtual, size, sketch)
     _draw_links(ax, scene, bodies, style)
     _draw_profiles(ax, scene, profiles, style)
     _draw_cams(ax, scene, plan, style)
@@ -323,20 +362,27 @@ def draw_scene(
 
 
 def _scene_size(
-    plan: SolvePlan, bodies: Mapping[str, Mapping[str, np.ndarray]], poses: Poses
+    plan: SolvePlan,
+    sketch: _Sketch,
+    bodies: Mapping[str, Mapping[str, np.ndarray]],
+    poses: Poses,
 ) -> float:
-    """The larger span of the sketch and of the pose (at least the plan's length)."""
+    """The larger span of the sketch and of the pose, at least the plan's length (drawing units).
+
+    ``poses`` are in drawing units too.
+    """
+    reach = (plan.length or 0.0) / sketch.unit
     sketch_span = [xy for pts in bodies.values() for xy in pts.values()]
     sketch_span += [
-        xy for pair in plan.mechanism.pairs if (xy := _sketch(plan, pair.point)) is not None
+        xy for pair in plan.mechanism.pairs if (xy := sketch.at(pair.point)) is not None
     ]
     if not sketch_span:
-        return float(plan.length or 1.0)
+        return float(reach or 1.0)
     world = np.array([place(poses, lk, xy) for lk, pts in bodies.items() for xy in pts.values()])
     span = float(np.ptp(np.array(sketch_span), axis=0).max())
     if len(world):
         span = max(span, float(np.ptp(world, axis=0).max()))
-    return float(max(span, plan.length or 0.0, 1e-9))
+    return float(max(span, reach) or 1.0)
 
 
 def _draw_links(
@@ -382,7 +428,7 @@ def _draw_cams(ax: Axes, scene: Scene, plan: SolvePlan, style: _SceneStyle) -> N
     """Each designed cam's profile (gid ``profile:<pair id>:<cam>``), turning with the cam, and
     its contact (gid ``contact:<point>``), which runs along the profile as it turns."""
     for cam in plan.cams:
-        outline = sketch_profile(cam)
+        outline = sketch_profile(cam) / scene.unit
         c = style.tint(cam.cam)
         patch = Polygon(
             outline, closed=True, facecolor=to_rgba(c, 0.08), edgecolor=c, lw=1.8,
@@ -397,7 +443,7 @@ def _draw_cams(ax: Axes, scene: Scene, plan: SolvePlan, style: _SceneStyle) -> N
         def move(poses: Poses, cam=cam, outline=outline, patch=patch, dot=dot) -> None:
             patch.set_xy(place(poses, cam.cam, outline))
             turned = float(poses[cam.cam][2]) if cam.cam in poses else 0.0
-            k = contact_at(cam, np.array([turned]))[0]
+            k = contact_at(cam, np.array([turned]))[0] / scene.unit
             dot.set_data([k[0]], [k[1]])
 
         scene.follow(move, patch, dot)
@@ -409,7 +455,7 @@ def _draw_contacts(
     """The contact point of each higher pair: a dot, and its name unless a plan point has it."""
     designed = {c.pair.id for c in plan.cams}
     for r in report.replacements:
-        k = point_xy(report.mechanism, r.pair.point)
+        k = style.sketch.at(r.pair.point)
         if k is None or r.pair.id in designed:  # a designed cam's contact moves on its profile
             continue
         # a gear mesh's contact stays at the pitch point as the gears roll
@@ -445,7 +491,7 @@ def _draw_sliders(ax: Axes, scene: Scene, plan: SolvePlan, style: _SceneStyle) -
     for pair in plan.mechanism.pairs:
         if pair.kind is not PairKind.P:
             continue
-        at = _sketch(plan, pair.point)
+        at = style.sketch.at(pair.point)
         if at is None:
             continue
         block, guide = _slider_of(plan, pair)
@@ -470,7 +516,7 @@ def _draw_pins(
         if pair.kind is PairKind.R and pair.point is not None:
             pins.setdefault(pair.point, []).append(pair)
     for point, pairs in pins.items():
-        at = _sketch(plan, point)
+        at = style.sketch.at(point)
         if at is None:
             continue
         links = [lk for p in pairs for lk in p.links]
@@ -541,9 +587,9 @@ def _point_carrier(plan: SolvePlan, name: str, link: str, virtual: set[str]) -> 
 def _draw_points(ax: Axes, scene: Scene, plan: SolvePlan, style: _SceneStyle) -> None:
     """Each named point's label, and a dot for a marker (a point defined ``on`` a link)."""
     m = plan.mechanism
-    for name, (owner, xy) in plan.points.items():
+    for name, (owner, _) in plan.points.items():
         link = _point_carrier(plan, name, owner, style.virtual)
-        xy = np.asarray(xy, dtype=float)
+        xy = style.sketch.xy[name]
         text = ax.text(
             0, 0, name, fontsize=9, ha="left", va="bottom", gid=f"point:{name}", zorder=7
         )
@@ -781,12 +827,14 @@ def _draw_driver(
     pin_r, size = style.pin_radius, style.size
     forward = d.speed >= 0
     if d.kind == "R":
-        pivot = np.asarray(d.pivot, dtype=float)
-        others = [xy for xy in body.values() if np.hypot(*(xy - pivot)) > 1e-9 * size]
+        pivot = style.sketch.at(d.point)
+        if pivot is None:
+            pivot = np.asarray(d.pivot, dtype=float) / style.sketch.unit
+        others = [xy for xy in body.values() if length(xy - pivot) > 1e-9 * size]
         away = -math.pi / 2
         if others:
             arm = np.mean(others, axis=0) - pivot
-            if np.hypot(*arm) > 1e-12:
+            if length(arm) > 1e-9 * size:
                 away = math.atan2(arm[1], arm[0]) + math.pi
         rho = 4.5 * pin_r
         ends = [
@@ -797,7 +845,7 @@ def _draw_driver(
         note = pivot + 2.0 * rho * np.array([math.cos(away), math.sin(away)])
         symbol = f"ω{d.link}"
     else:
-        at = _sketch(plan, d.point)
+        at = style.sketch.at(d.point)
         if at is None:
             at = np.mean(list(body.values()), axis=0) if body else np.zeros(2)
         u = np.asarray(d.direction, dtype=float) * (1.0 if forward else -1.0)

@@ -32,13 +32,17 @@ from ..solvers.solve import KinematicState
 __all__ = [
     "DRIVER_COLOUR",
     "OTHER_COLOUR",
+    "PLAIN_SPANS",
     "Poses",
+    "drawing_unit",
     "figure_axes",
+    "length",
     "nice_scale",
     "palette",
     "place",
     "point_xy",
     "state_poses",
+    "unit_text",
     "virtual_links",
 ]
 
@@ -119,6 +123,49 @@ def palette(report: StructuralReport) -> tuple[dict[str, str], list[Line2D]]:
     if report.replacements:
         handles.append(Line2D([], [], color=OTHER_COLOUR, lw=1.5, ls="--", label=_VIRTUAL_ENTRY))
     return colour, handles
+
+
+def length(v) -> float:
+    """The length of a 2-D vector, by ``hypot``: no square under- or overflows at any scale.
+
+    >>> length([3e-300, 4e-300]), length([3e200, 4e200]) > 4.99e200
+    (5e-300, True)
+    """
+    return float(np.hypot(v[0], v[1]))
+
+
+#: the spans drawn in plain metres; a span outside is drawn in a power of 1000 of the metre
+PLAIN_SPANS = (1e-9, 1e9)
+
+
+def drawing_unit(span: float) -> float:
+    """The unit the figures draw lengths in: 1 (m), or 10³ᵏ m for a span far from metres.
+
+    matplotlib cannot draw axes whose limits are below about 1e-287 (it widens them
+    to ±0.05), and a browser draws an SVG in single precision, so a mechanism
+    1e-302 m across is drawn in units of 10⁻³⁰³ m, numbers from 1 to 1000.
+
+    >>> drawing_unit(0.4), drawing_unit(4e-302), drawing_unit(3e150)
+    (1.0, 1e-303, 1e+150)
+    """
+    if not (math.isfinite(span) and span > 0) or PLAIN_SPANS[0] <= span <= PLAIN_SPANS[1]:
+        return 1.0
+    return float(f"1e{3 * math.floor(math.log10(span) / 3)}")
+
+
+def unit_text(unit: float, what: str = "m") -> str:
+    """The unit of an axis label: ``m``, or ``10⁻³⁰³ m`` for a drawing unit.
+
+    >>> unit_text(1.0), unit_text(1e-303), unit_text(1e150, "m/s")
+    ('m', '10⁻³⁰³ m', '10¹⁵⁰ m/s')
+    """
+    if unit == 1.0:
+        return what
+    power = str(round(math.log10(unit))).translate(_SUPERSCRIPT)
+    return f"10{power} {what}"
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 def nice_scale(value: float) -> float:

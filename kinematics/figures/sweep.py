@@ -3,7 +3,10 @@
 :func:`sweep_figure` — point paths and ω, ε, \\|v\\|, \\|a\\|, transmission
 angle and balancing moment against the input, each a ``Line2D`` with gid
 ``path:<point>``, ``omega:<link>``, ``epsilon:<link>``, ``speed:<point>``,
-``accel:<point>``, ``transmission:<group>``, ``balancing:<name>``.
+``accel:<point>``, ``transmission:<group>``, ``balancing:<name>``. A quantity far
+from 1 in its SI unit (a mechanism 1e-302 m across) is drawn in a power of 1000 of
+that unit, named on its axis (``|v| (10⁻³⁰³ m/s)``), as matplotlib cannot draw it
+in SI units.
 """
 
 from __future__ import annotations
@@ -15,8 +18,16 @@ from matplotlib.figure import Figure
 
 from ..solvers.plan import SolvePlan
 from ..solvers.sweep import Sweep
+from .style import drawing_unit, unit_text
 
 __all__ = ["sweep_figure"]
+
+
+def _unit_of(*arrays: np.ndarray) -> float:
+    """The unit the values of ``arrays`` are drawn in (:func:`~.style.drawing_unit`)."""
+    finite = [np.abs(a[np.isfinite(a)]) for a in arrays]
+    biggest = max((float(a.max()) for a in finite if a.size), default=0.0)
+    return drawing_unit(biggest)
 
 
 def _input_axis(result: Sweep, plan: SolvePlan | None) -> tuple[np.ndarray, str]:
@@ -24,7 +35,8 @@ def _input_axis(result: Sweep, plan: SolvePlan | None) -> tuple[np.ndarray, str]
     x = np.asarray(result.inputs[:, 0], dtype=float)
     name = plan.drivers[0].link if plan is not None and plan.drivers else "1"
     if plan is not None and plan.drivers and plan.drivers[0].kind == "P":
-        return x, f"driver {name}: displacement from the sketch (m)"
+        unit = _unit_of(x)
+        return x / unit, f"driver {name}: displacement from the sketch ({unit_text(unit)})"
     return np.degrees(x), f"driver {name}: rotation from the sketch (°)"
 
 
@@ -92,7 +104,9 @@ def _draw_paths(ax: Axes, result: Sweep) -> list[str]:
     """Each moving point's path in the plane, each fixed point a triangle; the moving points."""
     positions = {n: np.asarray(v["position"], dtype=float) for n, v in result.points.items()}
     reach = np.array([p for v in positions.values() for p in v]) if positions else np.zeros((1, 2))
-    size = float(np.ptp(reach, axis=0).max()) or 1.0
+    unit = _unit_of(reach)
+    positions = {n: p / unit for n, p in positions.items()}
+    size = float(np.ptp(reach / unit, axis=0).max()) or 1.0
     moving = [n for n, p in positions.items() if float(np.ptp(p, axis=0).max()) > 1e-9 * size]
     for name in moving:
         p = positions[name]
@@ -103,35 +117,44 @@ def _draw_paths(ax: Axes, result: Sweep) -> list[str]:
             ax.annotate(name, (float(p[0, 0]), float(p[0, 1])), fontsize=7)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_title("Paths of the points (coupler curves)", fontsize=10)
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    ax.set_xlabel(f"x ({unit_text(unit)})")
+    ax.set_ylabel(f"y ({unit_text(unit)})")
     return moving
 
 
 def _draw_link_rates(omega: Axes, epsilon: Axes, x: np.ndarray, result: Sweep) -> None:
     """Each link's ω and ε against the input."""
+    links = result.links.values()
+    w_unit = _unit_of(*(np.asarray(v["omega"], dtype=float) for v in links))
+    e_unit = _unit_of(*(np.asarray(v["epsilon"], dtype=float) for v in links))
     for name, values in result.links.items():
-        omega.plot(x, values["omega"], lw=1.3, label=name, gid=f"omega:{name}")
-        epsilon.plot(x, values["epsilon"], lw=1.3, label=name, gid=f"epsilon:{name}")
+        w, e = np.asarray(values["omega"], dtype=float), np.asarray(values["epsilon"], dtype=float)
+        omega.plot(x, w / w_unit, lw=1.3, label=name, gid=f"omega:{name}")
+        epsilon.plot(x, e / e_unit, lw=1.3, label=name, gid=f"epsilon:{name}")
     omega.set_title("Angular velocity ω", fontsize=10)
-    omega.set_ylabel("ω (rad/s)")
+    omega.set_ylabel(f"ω ({unit_text(w_unit, 'rad/s')})")
     epsilon.set_title("Angular acceleration ε", fontsize=10)
-    epsilon.set_ylabel("ε (rad/s²)")
+    epsilon.set_ylabel(f"ε ({unit_text(e_unit, 'rad/s²')})")
 
 
 def _draw_point_rates(
     speed: Axes, accel: Axes, x: np.ndarray, result: Sweep, moving: list[str]
 ) -> None:
     """Each moving point's \\|v\\| and \\|a\\| against the input."""
+    sizes = {}
     for name in moving:
         v = np.asarray(result.points[name]["velocity"], dtype=float)
         a = np.asarray(result.points[name]["acceleration"], dtype=float)
-        speed.plot(x, np.hypot(v[:, 0], v[:, 1]), lw=1.3, label=name, gid=f"speed:{name}")
-        accel.plot(x, np.hypot(a[:, 0], a[:, 1]), lw=1.3, label=name, gid=f"accel:{name}")
+        sizes[name] = (np.hypot(v[:, 0], v[:, 1]), np.hypot(a[:, 0], a[:, 1]))
+    v_unit = _unit_of(*(v for v, _ in sizes.values()))
+    a_unit = _unit_of(*(a for _, a in sizes.values()))
+    for name, (v, a) in sizes.items():
+        speed.plot(x, v / v_unit, lw=1.3, label=name, gid=f"speed:{name}")
+        accel.plot(x, a / a_unit, lw=1.3, label=name, gid=f"accel:{name}")
     speed.set_title("Speed |v| of the points", fontsize=10)
-    speed.set_ylabel("|v| (m/s)")
+    speed.set_ylabel(f"|v| ({unit_text(v_unit, 'm/s')})")
     accel.set_title("Acceleration |a| of the points", fontsize=10)
-    accel.set_ylabel("|a| (m/s²)")
+    accel.set_ylabel(f"|a| ({unit_text(a_unit, 'm/s²')})")
 
 
 def _draw_transmission(ax: Axes, x: np.ndarray, result: Sweep) -> None:
@@ -154,7 +177,10 @@ def _draw_transmission(ax: Axes, x: np.ndarray, result: Sweep) -> None:
 
 def _draw_balancing(ax: Axes, x: np.ndarray, result: Sweep) -> None:
     """The balancing moment (or force) of each driver against the input."""
+    unit = _unit_of(*(np.asarray(v, dtype=float) for v in result.balancing.values()))
     for name, values in result.balancing.items():
-        ax.plot(x, values, lw=1.3, label=name, gid=f"balancing:{name}")
+        ax.plot(x, np.asarray(values, dtype=float) / unit, lw=1.3, label=name,
+                gid=f"balancing:{name}")  # fmt: skip
     ax.set_title("Balancing moment (force)", fontsize=10)
-    ax.set_ylabel("M_cb (N·m) or P_cb (N)")
+    scale = "" if unit == 1.0 else f"{unit_text(unit, '')}"
+    ax.set_ylabel(f"M_cb ({scale}N·m) or P_cb ({scale}N)")

@@ -7,7 +7,9 @@ paths of the points) and adds the coordinates of every element at every
 pose as strict JSON. The page's script (``report.js``) sets those
 coordinates when the slider moves or the play button runs: no library, no
 drawing code in the browser. The SVG's y axis points down, so every y is
-negated.
+negated. A mechanism far from metres is written in a power of 1000 of the metre
+(:func:`kinematics.figures.style.drawing_unit`): a browser draws SVG in single
+precision, which holds neither 1e-302 nor 1e150.
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ from structure.model import Pair, PairKind
 from structure.report import StructuralReport
 
 from ..cams.contact import sketch_profile
-from ..figures.style import OTHER_COLOUR, palette, virtual_links
+from ..figures.style import OTHER_COLOUR, drawing_unit, palette, virtual_links
 from ..solvers.plan import SolvePlan
 from .cycle import Cycle, inputs_text
 from .markup import element, json_script
@@ -176,12 +178,15 @@ def _pins(report: StructuralReport, plan: SolvePlan) -> list[tuple[str, str, np.
 
 
 class _Frames:
-    """Every element's coordinates at every pose, in the SVG's axes (y down), rounded."""
+    """Every element's coordinates at every pose, in the SVG's axes (y down), rounded.
+
+    They are computed in metres (``size`` too) and written in ``unit`` metres.
+    """
 
     def __init__(self, report: StructuralReport, plan: SolvePlan, cycle: Cycle) -> None:
         self.count = len(cycle.sweep.inputs)
         sketch_span = np.array([p[1] for p in plan.points.values()] or [[0.0, 0.0]])
-        reach = float(max(np.ptp(sketch_span, axis=0).max(), plan.length or 0.0, 1e-9))
+        reach = float(max(np.ptp(sketch_span, axis=0).max(), plan.length or 0.0) or 1.0)
         self.bodies = _bodies(report, plan, reach)
         self.sliders = _sliders(plan)
         self.pins = _pins(report, plan)
@@ -196,14 +201,16 @@ class _Frames:
         everything = [a.reshape(-1, 2) for a in (*self.links, *self.pin_xy, *self.block_xy)]
         stacked = np.concatenate(everything) if everything else np.zeros((1, 2))
         low, high = stacked.min(axis=0), stacked.max(axis=0)
-        self.size = float(max((high - low).max(), reach * 0.2, 1e-9))
+        self.size = float(max((high - low).max(), reach * 0.2))
+        self.unit = drawing_unit(self.size)
         margin = 0.12 * self.size
-        self.box = (low[0] - margin, -high[1] - margin, *(high - low + 2 * margin))
-        self.decimals = max(0, 4 - math.floor(math.log10(self.size)))
+        box = (low[0] - margin, -high[1] - margin, *(high - low + 2 * margin))
+        self.box = tuple(float(v) / self.unit for v in box)
+        self.decimals = max(0, 4 - math.floor(math.log10(self.size / self.unit)))
 
     def flat(self, xy: np.ndarray) -> list[float]:
         """(…, 2) world coordinates as a flat list of SVG coordinates (y negated), rounded."""
-        svg = np.array(xy, dtype=float)
+        svg = np.array(xy, dtype=float) / self.unit
         svg[..., 1] *= -1.0
         return [round(float(v), self.decimals) for v in svg.ravel()]
 
@@ -250,6 +257,7 @@ def _drawing(
 ) -> str:
     """The SVG at the sketch's pose: traces, ground, guides, links, sliders, pins, labels."""
     s, f = frames.size, cycle.sketch
+    drawn = s / frames.unit  # the size in the SVG's unit
     parts = []
     for name, values in cycle.sweep.points.items():
         path = values["position"]
@@ -261,7 +269,7 @@ def _drawing(
     for _, link, xy, _ in frames.pins:
         if link == plan.mechanism.ground:
             x, y = frames.flat(xy)
-            d = 0.035 * s
+            d = 0.035 * drawn
             parts.append(
                 f'<path class="ground" d="M{x:g},{y:g} l{-d:g},{1.6 * d:g} h{2 * d:g} z"/>'
             )
@@ -279,7 +287,7 @@ def _drawing(
             f'<{tag} class="{kind}" data-link="{k}" data-name="{escape(body.link)}" '
             f'style="stroke: {body.colour}; fill: {body.colour}" points="{pts}"/>'
         )
-    w, h = 0.09 * s, 0.05 * s
+    w, h = 0.09 * drawn, 0.05 * drawn
     colour, _ = palette(report)
     for k, slider in enumerate(frames.sliders):
         x, y, deg = frames.slider_place(k, f)
@@ -289,14 +297,14 @@ def _drawing(
             f'width="{w:g}" height="{h:g}" style="fill: {tint}; stroke: {tint}" '
             f'transform="translate({x:g} {y:g}) rotate({deg:g})"/>'
         )
-    r = 0.014 * s
+    r = 0.014 * drawn
     for k, (name, _, _, marker) in enumerate(frames.pins):
-        x, y = frames.pin_xy[k][f][0], -frames.pin_xy[k][f][1]
+        x, y = frames.flat(frames.pin_xy[k][f])
         kind, size = ("marker", 0.5 * r) if marker else ("pin", r)
         parts.append(f'<circle class="{kind}" data-pin="{k}" cx="{x:g}" cy="{y:g}" r="{size:g}"/>')
         parts.append(
             f'<text class="pin-label" data-pin="{k}" x="{x + 1.5 * r:g}" y="{y - 1.5 * r:g}" '
-            f'font-size="{0.045 * s:g}">{escape(name)}</text>'
+            f'font-size="{0.045 * drawn:g}">{escape(name)}</text>'
         )
     box = " ".join(f"{v:g}" for v in frames.box)
     return (

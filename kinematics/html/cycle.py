@@ -59,7 +59,8 @@ def _reachable(plan: SolvePlan, rows: np.ndarray) -> tuple[int, str]:
         except (AssemblyError, SingularPoseError) as exc:
             stop = stop or str(exc)
             failed = np.asarray(exc.pose if exc.pose is not None else rows[end - 1], dtype=float)
-            nearest = int(np.argmin(np.linalg.norm(rows[:end] - failed.reshape(1, -1), axis=1)))
+            apart = (rows[:end] - failed.reshape(1, -1)) / plan.driver_scale  # radians, sizes
+            nearest = int(np.argmin(np.linalg.norm(apart, axis=1)))
             end = max(1, min(end - 1, nearest))
             continue
         return end, stop

@@ -250,7 +250,8 @@ def dyad_of(plan: SolvePlan, state: KinematicState, group: AssurGroup | None) ->
             Side("P", lb, ext[la].links[1], guide_link=la, pair=mid.pair),
         )
         d = Dyad(x, point_at(plan, state, la, x)[0], lb, sides, la, group.links)
-    if any(side.kind == "R" and norm(_arm(plan, state, d, side)) <= 1e-12 for side in d.sides):
+    tiny = 1e-12 * (plan.length or 1.0)  # an arm this short has no direction (any unit of length)
+    if any(side.kind == "R" and norm(_arm(plan, state, d, side)) <= tiny for side in d.sides):
         return None
     return d
 

@@ -341,8 +341,10 @@ class _Exact:
         )
         try:
             inverse = block.inv().convert_to(R) if keep_rows else None
-        except DMNonInvertibleMatrixError:
-            raise self.singular(label, "its Jacobian at the sketch is singular") from None
+        except DMNonInvertibleMatrixError:  # a dead centre, as the numeric solver says it
+            raise SingularPoseError.at(
+                label, np.zeros(len(self.plan.drivers)), "exactly singular", self.plan.driver_kinds
+            ) from None
         full = whole.convert_to(R)
 
         def solve(b: list) -> list:

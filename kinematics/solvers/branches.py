@@ -32,6 +32,7 @@ import numpy as np
 
 from ..errors import AssemblyError, BranchChangeError, SingularPoseError, inputs_text
 from .dyads import NOT_CLOSED
+from .paths import Watch
 from .plan import SolvePlan
 
 __all__ = [
@@ -46,6 +47,8 @@ Solver = Callable[..., object]
 
 _SUBSTEPS = 8  # finer steps per watched step, at each level
 _LEVELS = 16  # 8^16: far below the resolution of the inputs
+_LEVEL_STEPS = 256  # watched steps looked into at once
+_BUDGET = 2**20  # rows solved in all by one look into the watched steps
 _BOUNDARY_SPLITS = 64  # rows per round when closing in on a dead point
 _BOUNDARY_ROUNDS = 7  # 64^7 ≈ 4e12
 
@@ -84,7 +87,14 @@ def confirm_branches(plan: SolvePlan, inputs: np.ndarray, watch: list, solve: So
     """Look into the watched steps with finer ones; raise at a change of assembly mode.
 
     ``watch`` holds ``(group label, step indices)`` from the solve of ``inputs``
-    (step k goes from row k to row k + 1).
+    (step k goes from row k to row k + 1). Each level solves the watched
+    steps cut into :data:`_SUBSTEPS` pieces, as one path whose pieces are
+    joined by breaks (:class:`~kinematics.solvers.paths.Watch`), and keeps the
+    pieces where the dyads still see a dip. At most :data:`_LEVEL_STEPS` steps
+    are looked into at once (the first along the path; the others wait their
+    turn), and at most :data:`_BUDGET` rows are solved in all: samples that
+    keep dipping beyond that (a group lying along its change point, within
+    rounding) stop the sweep at the first of them, as a change point.
 
     Raises
     ------
@@ -96,12 +106,19 @@ def confirm_branches(plan: SolvePlan, inputs: np.ndarray, watch: list, solve: So
         A stretch between two poses cannot be assembled (its range is named).
     """
     steps = np.array(sorted({int(k) for _, ks in watch for k in ks}))
-    starts, ends = inputs[steps], inputs[steps + 1]
     groups = {g for g, _ in watch}
-    label = watch[0][0]
-    for _ in range(_LEVELS):
+    pending = [(inputs[steps], inputs[steps + 1], watch[0][0], 0)]
+    solved = 0
+    while pending:
+        starts, ends, label, level = pending.pop(0)
+        if len(starts) > _LEVEL_STEPS:  # the first ones now, the others after them
+            pending.insert(0, (starts[_LEVEL_STEPS:], ends[_LEVEL_STEPS:], label, level))
+            starts, ends = starts[:_LEVEL_STEPS], ends[:_LEVEL_STEPS]
+        if level == _LEVELS or solved > _BUDGET:
+            raise change_point(plan, label, (starts[0] + ends[0]) / 2)
         rows = subdivided(starts, ends)
-        found: list = []
+        solved += len(rows)
+        found = Watch(np.arange(_SUBSTEPS, len(rows) - 1, _SUBSTEPS + 1))
         try:
             solve(rows, found, groups)
         except SingularPoseError as exc:
@@ -118,12 +135,10 @@ def confirm_branches(plan: SolvePlan, inputs: np.ndarray, watch: list, solve: So
         inner = sorted(
             {int(k) for _, ks in found for k in ks if int(k) % (_SUBSTEPS + 1) != _SUBSTEPS}
         )
-        if not inner:
-            return
-        label = next(g for g, ks in found if int(inner[0]) in {int(k) for k in ks})
-        index = np.array(inner)
-        starts, ends = rows[index], rows[index + 1]
-    raise change_point(plan, label, (starts[0] + ends[0]) / 2)
+        if inner:
+            first = next(g for g, ks in found if int(inner[0]) in {int(k) for k in ks})
+            index = np.array(inner)
+            pending.insert(0, (rows[index], rows[index + 1], first, level + 1))
 
 
 def _range_of(plan: SolvePlan, path: np.ndarray, group: str, solve: Solver) -> AssemblyError:

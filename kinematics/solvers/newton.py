@@ -31,6 +31,7 @@ import numpy as np
 
 from ..errors import AssemblyError
 from .equations import Equation, group_residual, group_system
+from .memory import check_poses
 from .plan import GroupStep, SolvePlan
 
 __all__ = [
@@ -150,7 +151,7 @@ def _sequential(
 def _chunk_size(plan: SolvePlan, inputs: np.ndarray) -> int:
     """Poses per batched Newton chunk: about ``_CHUNK_SPAN`` of input at the typical step."""
     n = inputs.shape[0]
-    scale = _driver_scale(plan)
+    scale = plan.driver_scale
     steps = np.max(np.abs(np.diff(inputs, axis=0)) / scale, axis=1) if n > 1 else np.zeros(1)
     typical = float(np.median(steps)) if len(steps) else 0.0
     return int(np.clip(_CHUNK_SPAN / typical, 8, _CHUNK_MAX)) if typical > 0 else 8
@@ -265,11 +266,6 @@ def follow(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, start:
         q[link] = out[link]
 
 
-def _driver_scale(plan: SolvePlan) -> np.ndarray:
-    """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size."""
-    return np.array([1.0 if d.kind == "R" else plan.length for d in plan.drivers])
-
-
 def needs_continuation(plan: SolvePlan) -> bool:
     """Whether some step is solved by Newton (so far-apart inputs need intermediate poses)."""
     return any(step.group is None or step.group.kind is None for step in plan.steps)
@@ -280,12 +276,23 @@ def densified(plan: SolvePlan, inputs: np.ndarray) -> tuple[np.ndarray, np.ndarr
 
     Returns the rows and, for each row of ``inputs``, its index among them.
     """
-    scale = _driver_scale(plan)
+    scale = plan.driver_scale
     previous = np.vstack([np.zeros((1, inputs.shape[1])), inputs[:-1]])
     jump = np.max(np.abs(inputs - previous) / scale, axis=1) if len(scale) else np.zeros(0)
-    pieces = np.maximum(1, np.ceil(jump / CONTINUATION_STEP)).astype(int)
-    if not len(pieces) or int(pieces.max()) == 1:  # no step is too long: the rows as they are
+    pieces = np.ceil(jump / CONTINUATION_STEP)
+    if not len(pieces) or float(pieces.max()) <= 1.0:  # no step too long: the rows as they are
         return inputs, np.arange(len(inputs))
+    rows = int(min(float(np.sum(np.maximum(pieces, 1.0))), 2.0**62))
+    check_poses(
+        plan,
+        rows,
+        rates=False,
+        what=f"following these inputs from the sketch through {rows} intermediate poses (one "
+        f"every {CONTINUATION_STEP:g} rad, or {CONTINUATION_STEP:g} of the sketch's size for a "
+        "sliding driver)",
+        advice="give inputs nearer the sketch and to each other",
+    )
+    pieces = np.maximum(1, pieces).astype(int)
     picks = np.cumsum(pieces) - 1
     # row i's pieces: previous_i + (input_i − previous_i)·k/pieces_i, k = 1 … pieces_i
     owner = np.repeat(np.arange(len(inputs)), pieces)

@@ -15,6 +15,8 @@ its links and the equations of its pairs. Nothing is solved here.
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -30,7 +32,7 @@ from structure.report import StructuralReport
 from .equations import Equation, slide_equations
 from .planar import unit_from_degrees
 
-__all__ = ["DriverStep", "GroupStep", "SolvePlan", "make_plan"]
+__all__ = ["DriverStep", "GroupStep", "SolvePlan", "in_unit", "make_plan", "working_unit"]
 
 
 @dataclass(frozen=True)
@@ -87,7 +89,10 @@ class SolvePlan:
     coordinates; ``length`` is the sketch's size (for tolerances); ``flip``
     holds the labels of the dyads to assemble in the other mode than the
     sketch's; ``higher_pairs`` the higher pairs replaced by virtual links,
-    whose replacement holds at the sketch pose only.
+    whose replacement holds at the sketch pose only. ``unit`` is the length,
+    in metres, that one unit of the plan's coordinates stands for (1: the
+    file's metres; see :func:`in_unit`); a sliding driver's inputs, speed and
+    acceleration stay in metres whatever it is.
     """
 
     mechanism: Mechanism
@@ -99,6 +104,7 @@ class SolvePlan:
     higher_pairs: tuple[str, ...] = ()
     contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
     rolling: tuple[GroupStep, ...] | None = None
+    unit: float = 1.0
 
     @property
     def driver_kinds(self) -> tuple[str, ...]:
@@ -107,8 +113,12 @@ class SolvePlan:
 
     @property
     def driver_scale(self) -> np.ndarray:
-        """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size."""
-        return np.array([1.0 if d.kind == "R" else self.length for d in self.drivers])
+        """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size.
+
+        The sketch's size in metres, as a sliding driver's inputs are.
+        """
+        size = self.length * self.unit
+        return np.array([1.0 if d.kind == "R" else size for d in self.drivers])
 
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
@@ -302,3 +312,73 @@ def _rolling_steps(
                       unknowns)
         )  # fmt: skip
     return tuple(out)
+
+
+#: the sketch sizes (m) a plan is solved at as it stands: from 2⁻⁶⁴ to 2⁶⁴ the squares and
+#: products the solvers form (up to the eighth power of a length) stay normal floats
+_PLAIN_SIZES = (2.0**-64, 2.0**64)
+
+
+def working_unit(plan: SolvePlan) -> float:
+    """The unit of length (m) to solve ``plan`` in: 1, or a power of two near its size.
+
+    A sketch between 2⁻⁶⁴ and 2⁶⁴ m is solved as it stands; a smaller or
+    larger one in the power of two nearest its size, so that no square of a
+    length under- or overflows. Scaling by a power of two is exact, so the
+    answers are the same numbers either way.
+
+    >>> from structure import analyze, parse_edgelist
+    >>> tiny = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+    ...                        "point A 0 0", "point B 0 1e-300", "point C 3e-300 1e-300",
+    ...                        "point D 3e-300 0"])
+    >>> working_unit(make_plan(analyze(tiny))) == 2.0**-995   # 3e-300 m = 1.0045·2⁻⁹⁹⁵ m
+    True
+    """
+    size = plan.length * plan.unit
+    low, high = _PLAIN_SIZES
+    if low <= size <= high:
+        return 1.0
+    return math.ldexp(1.0, math.frexp(size)[1] - 1)
+
+
+def in_unit(plan: SolvePlan, unit: float) -> SolvePlan:
+    """The plan with its coordinates measured in ``unit`` metres (a power of two: exact).
+
+    The drivers' pivots, the pairs' points, the named points and the sketch's
+    size are divided by ``unit``; the sliding drivers' inputs, speeds and
+    accelerations stay in metres (``plan.unit`` converts them). A plan in a
+    unit already is measured in the new one.
+    """
+    ratio = unit / plan.unit
+    if ratio == 1.0:
+        return plan
+    m = plan.mechanism
+    points = {
+        name: dataclasses.replace(p, x=p.x / ratio, y=p.y / ratio, exact=(None, None))
+        for name, p in m.points.items()
+    }
+    mechanism = dataclasses.replace(m, points=points)
+    drivers = tuple(dataclasses.replace(d, pivot=d.pivot / ratio) for d in plan.drivers)
+    return dataclasses.replace(
+        plan,
+        mechanism=mechanism,
+        drivers=drivers,
+        steps=_steps_in(plan.steps, ratio),
+        points=MappingProxyType({k: (link, c / ratio) for k, (link, c) in plan.points.items()}),
+        length=plan.length / ratio,
+        rolling=None if plan.rolling is None else _steps_in(plan.rolling, ratio),
+        unit=unit,
+    )
+
+
+def _steps_in(steps: tuple[GroupStep, ...], ratio: float) -> tuple[GroupStep, ...]:
+    """The steps with their equations' points divided by ``ratio`` (normals are unit vectors)."""
+    return tuple(
+        dataclasses.replace(
+            step,
+            equations=tuple(
+                dataclasses.replace(eq, point=eq.point / ratio) for eq in step.equations
+            ),
+        )
+        for step in steps
+    )

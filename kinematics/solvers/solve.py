@@ -52,7 +52,7 @@ from .newton import (
     needs_continuation,
     scaled_jacobian,
 )
-from .plan import GroupStep, SolvePlan
+from .plan import GroupStep, SolvePlan, in_unit, working_unit
 
 # the errors and the state types are defined in kinematics.errors and kinematics.results.state;
 # they stay importable from here
@@ -80,8 +80,8 @@ def _place_drivers(
                 d.pivot.copy(), px, py, 0.0, 0.0, 0.0, 0.0,
                 np.cos(value), np.sin(value), float(d.speed), float(d.acceleration), value,
             )  # fmt: skip
-        else:
-            ux, uy = float(d.direction[0]), float(d.direction[1])
+        else:  # the input, speed and acceleration in metres, the frame in the plan's unit
+            ux, uy = float(d.direction[0]) / plan.unit, float(d.direction[1]) / plan.unit
             v, a = float(d.speed), float(d.acceleration)
             frames[d.link] = Frame(
                 np.zeros(2), value * ux, value * uy, v * ux, v * uy, a * ux, a * uy,
@@ -129,6 +129,9 @@ def solve_poses(
     inputs = np.atleast_2d(np.asarray(inputs, dtype=float))
     if inputs.shape[1] != len(plan.drivers):
         inputs = inputs.reshape(-1, len(plan.drivers))
+    unit = working_unit(plan)
+    if unit != plan.unit:
+        return _solved_in(in_unit(plan, unit), inputs, guess, rates)
     if plan.higher_pairs and np.any(inputs != 0):
         if plan.rolling is None:
             raise MechanismError(
@@ -153,6 +156,33 @@ def solve_poses(
     return _checked(plan, inputs, guess, rates)
 
 
+def _solved_in(
+    plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None, rates: bool
+) -> Motion:
+    """:func:`solve_poses` of a plan measured in a unit of its own, the motion back in metres.
+
+    The links' displacements and their rates are multiplied by ``plan.unit``
+    (a power of two: exact); angles, ω and ε are the same in any unit. The
+    inputs are a copy, so that the solve writes nothing into a sweep's layout
+    (which wants metres).
+    """
+    unit = plan.unit
+    if guess is not None:
+        per = np.array([unit, unit, 1.0])
+        guess = {link: np.asarray(value, dtype=float) / per for link, value in guess.items()}
+    motion = solve_poses(plan, inputs.copy(), guess, rates=rates)
+
+    def metres(table: Mapping[str, np.ndarray]) -> MappingProxyType:
+        out = {}
+        for link, value in table.items():
+            value = np.array(value, dtype=float)
+            value[:, :2] *= unit
+            out[link] = value
+        return MappingProxyType(out)
+
+    return Motion(inputs, metres(motion.q), metres(motion.qd), metres(motion.qdd))
+
+
 def _checked(
     plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None, rates: bool
 ) -> Motion:
@@ -161,7 +191,8 @@ def _checked(
     The steps the closed-form dyads watch are looked into with finer steps
     (:func:`kinematics.solvers.branches.confirm_branches`); a path with steps coarser
     than the continuation step is first checked on intermediate poses, positions
-    only. A single pose keeps the sketch's mode without a path to check.
+    only; a path that starts away from the sketch, from the sketch on. A single
+    pose keeps the sketch's mode without a path to check.
     """
     positions = _positions_of(plan)
     watch: list = []
@@ -178,6 +209,12 @@ def _checked(
         _precise_errors(plan, dense, lambda found: positions(dense, found), watch)
     if watch:
         branches.confirm_branches(plan, path, watch, positions)
+    if np.any(path[0] != 0.0):  # the step from the sketch to the first row, looked into too
+        head = np.vstack([np.zeros((1, path.shape[1])), path[:2]])
+        watch = []
+        _precise_errors(plan, head, lambda found: positions(head, found), watch)
+        if watch:
+            branches.confirm_branches(plan, head, watch, positions)
     return motion
 
 

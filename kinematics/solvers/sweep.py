@@ -19,7 +19,6 @@ from __future__ import annotations
 import csv
 import io
 import math
-import os
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import partial
@@ -28,10 +27,10 @@ import numpy as np
 
 from structure.errors import EdgeListError, EdgeListProblem
 
-from ..errors import SweepSizeError
 from ..kinetostatics.forces import forces_over
 from ..results.state import Motion
 from .dyads import PointLayout, laid_out
+from .memory import BYTES_PER_POSE_ITEM, check_poses, memory_limit
 from .plan import SolvePlan
 from .planar import cross, norm, rotate_many, units
 from .solve import solve_poses
@@ -45,19 +44,6 @@ __all__ = [
     "sweep",
     "transmission_angle",
 ]
-
-
-#: bytes per pose a sweep's results and the solve's temporaries take, per named point and link
-#: (measured: 90–320 with rates; a third of it for positions only)
-BYTES_PER_POSE_ITEM = 320
-
-
-def memory_limit() -> int:
-    """The memory a sweep may take: half of this machine's (4 GiB where it cannot be read)."""
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
-    except (ValueError, OSError, AttributeError):  # pragma: no cover - platform
-        return 4 * 2**30
 
 
 class _LazyMapping(Mapping):
@@ -179,9 +165,13 @@ def transmission_angle(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> float:
     return math.acos(max(-1.0, min(1.0, cos)))
 
 
+def _directions(v: np.ndarray) -> np.ndarray:
+    """Each row of ``v`` (N, 2) divided by its length (no product of two lengths: any unit)."""
+    return v / norm(v)[:, None]
+
+
 def _angles(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
-    u, v = c - b, c - d
-    cos = np.einsum("ij,ij->i", u, v) / (norm(u) * norm(v))
+    cos = np.einsum("ij,ij->i", _directions(c - b), _directions(c - d))
     return np.arccos(np.clip(cos, -1.0, 1.0))
 
 
@@ -246,16 +236,7 @@ def sweep(
 
 def _check_size(plan: SolvePlan, poses: int, rates: bool) -> None:
     """Refuse a sweep whose results would not fit in the memory a sweep may take."""
-    items = len(plan.points) + len(plan.mechanism.moving_links)
-    per_pose = BYTES_PER_POSE_ITEM * max(items, 1) // (1 if rates else 3)
-    limit = memory_limit()
-    if poses * per_pose > limit:
-        raise SweepSizeError(
-            f"a sweep of {poses} poses would take about {poses * per_pose / 1e9:.3g} GB of "
-            f"memory, more than the {limit / 1e9:.3g} GB a sweep may take (half of this "
-            f"machine's): ask for at most {limit // per_pose} poses (steps=, --steps on the "
-            "command line), or sweep the inputs in parts"
-        )
+    check_poses(plan, poses, rates)
 
 
 def _link_column(motion: Motion, link: str, key: str) -> np.ndarray:
@@ -390,8 +371,9 @@ def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.nda
             if u is None or len(pins) != 2 or not all(x in points for x in pins):
                 continue
             line = points[pins[1]]["position"] - points[pins[0]]["position"]
-            length = np.sqrt(np.einsum("ij,ij->i", line, line))
-            along = np.abs(np.einsum("ij,ij->i", line, u)) / np.where(length > 0, length, 1.0)
+            length = norm(line)
+            line = line / np.where(length > 0, length, 1.0)[:, None]
+            along = np.abs(np.einsum("ij,ij->i", line, u))
             out[g.label] = np.pi / 2 - np.arccos(np.clip(along, 0.0, 1.0))
             continue
         slides = [p for p in (*ext, mid) if p.kind.value == "P"]
@@ -428,8 +410,8 @@ def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
         guide = slide[0].links[1]
         theta = motion.q[guide][:, 2] if guide in motion.q else np.zeros(len(motion.inputs))
         u = units(pair.angle + theta)
-        rod = points[mid.point]["position"] - points[rod_pin[0].point]["position"]
-        along = np.abs(np.einsum("ij,ij->i", rod, u)) / norm(rod)
+        rod = _directions(points[mid.point]["position"] - points[rod_pin[0].point]["position"])
+        along = np.abs(np.einsum("ij,ij->i", rod, u))
         out[g.label] = np.arcsin(np.clip(along, 0.0, 1.0))
     return out
 

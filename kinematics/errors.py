@@ -37,6 +37,7 @@ __all__ = [
     "IndeterminateError",
     "SingularPoseError",
     "SweepSizeError",
+    "TravelError",
     "inputs_text",
 ]
 
@@ -157,3 +158,7 @@ class IndeterminateError(MechanismError):
 
 class SweepSizeError(MechanismError):
     """A sweep asks for more poses than fit in the memory a sweep may take."""
+
+
+class TravelError(MechanismError):
+    """The drivers cannot move a mechanism from its sketch either way: nothing to sweep."""

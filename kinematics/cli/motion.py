@@ -7,6 +7,7 @@ of one pose; the ranges over a sweep and its CSV; an animation of the turn.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from typing import TYPE_CHECKING
 
@@ -22,6 +23,7 @@ from ..solvers.exact import solve_exact
 from ..solvers.plan import make_plan
 from ..solvers.solve import solve_pose
 from ..solvers.sweep import read_inputs, sweep
+from ..solvers.travel import cycle_span, driver_rates
 from .output import (
     EXIT_OK,
     EXIT_USAGE,
@@ -135,7 +137,7 @@ def run_sweep(args: argparse.Namespace) -> int:
         check_finite(result.as_dict())
         if args.plot:
             load_drawing().save_sweep_figure(result, plan, args.plot)
-        out = _sweep_lines(args, result)  # the sweep's ranges and balancing, computed when read
+        out = _sweep_lines(args, plan, result)  # the ranges and balancing, computed when read
     except MechanismError as exc:
         return fail(str(exc))
     if args.csv:
@@ -149,12 +151,44 @@ def run_sweep(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _sweep_lines(args: argparse.Namespace, result: Sweep) -> list[str]:
+def _cycle_text(plan: SolvePlan, inputs: np.ndarray) -> str:
+    """What the default sweep covers: one turn, a cycle of several drivers, or a stroke."""
+    rates = driver_rates(plan)
+    span = cycle_span(plan, rates)
+    if span is None:
+        ends = ", ".join(
+            f"{d.link} from {inputs[0, k]:.4g} m to {inputs[-1, k]:.4g} m"
+            for k, d in enumerate(plan.drivers)
+            if rates[k]
+        )
+        return f"the stroke of the sliding driver(s), up to its dead points: {ends}"
+    turns = rates * span / (2 * math.pi)
+    if len(turns) == 1 or np.all(turns == 1.0):
+        return "one turn of the driver(s)"
+    each = ", ".join(
+        f"{d.link} {_turns_text(t) if d.kind == 'R' else f'{t * 2 * math.pi:.4g} m'}"
+        for d, t in zip(plan.drivers, turns, strict=True)
+    )
+    return f"one cycle of the drivers, at the ratio of their speeds ({each})"
+
+
+def _turns_text(turns: float) -> str:
+    """``2 turns``, ``1 turn back``, ``held``."""
+    if turns == 0:
+        return "held"
+    count = f"{abs(turns):.4g} turn{'' if abs(turns) == 1 else 's'}"
+    return count if turns > 0 else f"{count} back"
+
+
+def _sweep_lines(args: argparse.Namespace, plan: SolvePlan, result: Sweep) -> list[str]:
     """The text answer of a sweep: the ranges of ω, ε, transmission angles and balancing."""
     if args.inputs:
         out = [f"{len(result.inputs)} poses of {args.inputs} for {args.file}", ""]
     else:
-        out = [f"{args.steps} poses over one turn of the driver(s) of {args.file}", ""]
+        out = [
+            f"{len(result.inputs)} poses over {_cycle_text(plan, result.inputs)} of {args.file}",
+            "",
+        ]
     out.append("link   ω min … max (rad/s)        ε min … max (rad/s²)")
     for name, values in result.links.items():
         w, e = values["omega"], values["epsilon"]

@@ -19,26 +19,32 @@ The solves are handed in as ``solve(rows, watch, groups)``: positions of the
 plan at the driver inputs ``rows`` (N, drivers), appending watched steps to
 ``watch``, solving the groups up to the last of ``groups`` (all if None).
 
->>> import numpy as np
+>>> import dataclasses
+
+import numpy as np
 >>> subdivided(np.array([[0.0]]), np.array([[0.8]]), 4).ravel().round(6).tolist()
 [0.0, 0.2, 0.4, 0.6, 0.8]
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 
 import numpy as np
 
 from ..errors import AssemblyError, BranchChangeError, SingularPoseError, inputs_text
 from .dyads import NOT_CLOSED
+from .newton import CONTINUATION_STEP
 from .paths import Watch
 from .plan import SolvePlan
 
 __all__ = [
     "change_point",
     "confirm_branches",
+    "either_mode",
     "is_change_point",
+    "split_at",
     "subdivided",
     "unassembled_range",
 ]
@@ -216,3 +222,54 @@ def unassembled_range(
         error.indices,
     )
     return out
+
+
+def either_mode(plan: SolvePlan, group: str) -> list[SolvePlan]:
+    """``plan`` with the dyad ``group`` in its assembly mode, and in the other one.
+
+    Empty when ``group`` is not a dyad the closed forms assemble by mode (a
+    change point of another group cannot be gone past by choosing its mode).
+    """
+    dyads = {s.label for s in plan.steps if s.group is not None and s.group.kind is not None}
+    if group not in dyads:
+        return []
+    return [plan, dataclasses.replace(plan, flip=plan.flip ^ {group})]
+
+
+def split_at(
+    plan: SolvePlan, inputs: np.ndarray, origin: np.ndarray | None, error: BranchChangeError
+) -> tuple[int, np.ndarray, np.ndarray] | None:
+    """Where the path of ``inputs`` (from ``origin``, else the sketch) meets a change point.
+
+    Returns ``(k, point, ahead)``: the change point lies on the step into row
+    ``k`` (from row k − 1, or from the origin for k = 0); ``point`` is it (the
+    pose ``error`` names), and
+    ``ahead`` a few poses from it toward row k, no farther than one
+    continuation step, to try the ways on. None when the error names no pose
+    on the path, or a row lies on the change point itself.
+    """
+    if error.pose is None:
+        return None
+    point = np.asarray(error.pose, dtype=float)
+    scale = plan.driver_scale
+    start = np.zeros(inputs.shape[1]) if origin is None else np.asarray(origin, dtype=float)
+    ends = inputs / scale
+    begins = np.vstack([start[None, :] / scale, ends[:-1]])
+    step = ends - begins
+    length2 = np.einsum("ij,ij->i", step, step)
+    along = np.einsum("ij,ij->i", point / scale - begins, step) / np.where(length2 > 0, length2, 1)
+    off = point / scale - (begins + np.clip(along, 0.0, 1.0)[:, None] * step)
+    near = np.sqrt(np.einsum("ij,ij->i", off, off)) <= 1e-9 * (1.0 + np.sqrt(length2))
+    on = near & (length2 > 0)
+    if not on.any():
+        return None
+    k = int(np.argmax(on))
+    if not 1e-12 < along[k] < 1.0 - 1e-12:  # a row (or the origin) on the change point itself
+        return None
+    toward = inputs[k] - point
+    span = float(np.max(np.abs(toward) / scale))
+    if span <= 0.0:
+        return None
+    reach = min(1.0, CONTINUATION_STEP / span)
+    ahead = point + np.array([0.25, 0.5, 0.75, 1.0])[:, None] * reach * toward
+    return k, point, ahead

@@ -59,6 +59,7 @@ __all__ = [
     "known_frame",
     "known_pin",
     "laid_out",
+    "layout_discarded",
     "place_dyad",
 ]
 
@@ -95,6 +96,19 @@ def laid_out(layout: PointLayout) -> Iterator[PointLayout]:
     finally:
         _LAYOUT.reset(token)
         layout.owner = None  # the owner refers to the layout: no cycle to wait for the collector
+
+
+def layout_discarded() -> None:
+    """Forget what a solve that failed wrote into the current layout (its rows are free again).
+
+    A solve that writes the named points into a sweep's layout and then fails
+    (a change point found after the poses were solved) leaves rows that the
+    solve the sweep goes on with, in pieces, must not take for its own.
+    """
+    layout = _LAYOUT.get()
+    if layout is not None:
+        layout.filled.clear()
+        layout.owner = None
 
 
 class PinCache(dict):
@@ -430,13 +444,15 @@ def _circle_circle(
     t = ey * ey
     d2 += t
     inv = np.sqrt(d2)
-    np.reciprocal(inv, out=inv)
+    with np.errstate(divide="ignore", invalid="ignore"):  # pins that meet: refused just below
+        np.reciprocal(inv, out=inv)
     along = d2
     along += len1 - len2
     along *= inv
     along *= 0.5
-    h = np.multiply(along, along, out=t)
-    np.subtract(len1, h, out=h)
+    with np.errstate(invalid="ignore"):
+        h = np.multiply(along, along, out=t)
+        np.subtract(len1, h, out=h)
     low = h.min()
     if not low >= -tol:  # NaN too: pins that coincide with unequal links
         raise _not_assembled(step, solve.plan, inputs, ~(h >= -tol))

@@ -106,9 +106,7 @@ def _has_low(y: np.ndarray) -> bool:
     look into then, and a long sweep is done with one pass.
     """
     mid = y[1:-1]
-    return bool(
-        y[0] < y[1] or y[-1] < y[-2] or ((mid <= y[:-2]) & (mid <= y[2:])).any()
-    )
+    return bool(y[0] < y[1] or y[-1] < y[-2] or ((mid <= y[:-2]) & (mid <= y[2:])).any())
 
 
 def _dips(y, length, jump, turn, starts, ends) -> np.ndarray:

@@ -39,7 +39,7 @@ import numpy as np
 
 from structure.errors import MechanismError
 
-from ..errors import DEAD_CENTRE, AssemblyError, SingularPoseError
+from ..errors import DEAD_CENTRE, AssemblyError, BranchChangeError, SingularPoseError
 from ..results.state import KinematicState, LinkState, Motion, PointState
 from . import branches, dyads, triads
 from .equations import group_system
@@ -143,17 +143,98 @@ def solve_poses(
             )
         # gear meshes roll: their virtual links give way to the rolling constraints
         plan = dataclasses.replace(plan, steps=plan.rolling, higher_pairs=())
-    if guess is None and needs_continuation(plan):
-        dense, picks = densified(plan, inputs)
+    return _through(plan, inputs, guess, rates, None)
+
+
+def _followed(
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    rates: bool,
+    origin: np.ndarray | None,
+) -> Motion:
+    """:func:`_checked`, Newton's groups followed through intermediate poses from ``origin``.
+
+    ``origin`` is where the path starts (the sketch when None, else a pose
+    whose links' poses ``guess`` holds); without an origin, a guess starts
+    Newton at the first row with no intermediate poses.
+    """
+    if needs_continuation(plan) and (guess is None or origin is not None):
+        dense, picks = densified(plan, inputs, origin)
         if len(dense) > len(inputs):
-            motion = _checked(plan, dense, None, rates)
-            return Motion(
-                inputs,
-                MappingProxyType({k: v[picks] for k, v in motion.q.items()}),
-                MappingProxyType({k: v[picks] for k, v in motion.qd.items()}),
-                MappingProxyType({k: v[picks] for k, v in motion.qdd.items()}),
-            )
-    return _checked(plan, inputs, guess, rates)
+            return _picked(_checked(plan, dense, guess, rates, origin), inputs, picks)
+    return _checked(plan, inputs, guess, rates, origin)
+
+
+def _picked(motion: Motion, inputs: np.ndarray, picks: np.ndarray) -> Motion:
+    """The motion at the rows ``picks`` only (the ``inputs``), as plain arrays."""
+    return Motion(
+        inputs,
+        MappingProxyType({k: v[picks] for k, v in motion.q.items()}),
+        MappingProxyType({k: v[picks] for k, v in motion.qd.items()}),
+        MappingProxyType({k: v[picks] for k, v in motion.qdd.items()}),
+    )
+
+
+def _through(
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    rates: bool,
+    origin: np.ndarray | None,
+) -> Motion:
+    """:func:`_followed`, on through a change point where the rest of the mechanism decides.
+
+    At a change point of a closed-form dyad the linkage may go on in either
+    assembly mode, unless the rest of it allows one only (a parallelogram
+    with a third parallel crank: the crank holds it a parallelogram). Each
+    mode is tried a little way past the change point; when exactly one
+    solves, the inputs after the change point are solved in it, from there
+    on (and so on at the next one). Otherwise the change point stops the solve.
+    """
+    try:
+        return _followed(plan, inputs, guess, rates, origin)
+    except BranchChangeError as exc:
+        dyads.layout_discarded()
+        split = branches.split_at(plan, inputs, origin, exc)
+        if split is None:
+            raise
+        k, point, ahead = split
+        before = _followed(plan, inputs[:k], guess, rates, origin) if k else None
+        start = _last_poses(before) if before is not None else guess
+        options = branches.either_mode(plan, exc.group)
+        modes = [option for option in options if _goes_on(option, ahead, start, point)]
+        if len(modes) != 1:
+            raise
+        after = _through(modes[0], inputs[k:], start, rates, point)
+        return _joined(inputs, before, after)
+
+
+def _goes_on(plan: SolvePlan, ahead: np.ndarray, start, origin: np.ndarray) -> bool:
+    """Whether ``plan`` solves the poses ``ahead`` (just past a change point at ``origin``)."""
+    try:
+        _followed(plan, ahead, start, False, origin)
+    except (AssemblyError, SingularPoseError):
+        return False
+    return True
+
+
+def _last_poses(motion: Motion) -> dict[str, np.ndarray]:
+    """Every link's pose at the motion's last row (where to start Newton beyond it)."""
+    return {link: np.array(q[-1], dtype=float) for link, q in motion.q.items()}
+
+
+def _joined(inputs: np.ndarray, before: Motion | None, after: Motion) -> Motion:
+    """The motions of two stretches of ``inputs`` (the first may be None), one after the other."""
+    if before is None:
+        return Motion(inputs, after.q, after.qd, after.qdd)
+
+    def joined(a: Mapping[str, np.ndarray], b: Mapping[str, np.ndarray]) -> MappingProxyType:
+        return MappingProxyType({k: np.concatenate([a[k], b[k]]) for k in b if k in a})
+
+    return Motion(
+        inputs, *(joined(getattr(before, k), getattr(after, k)) for k in ("q", "qd", "qdd"))
+    )
 
 
 def _solved_in(
@@ -184,32 +265,39 @@ def _solved_in(
 
 
 def _checked(
-    plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None, rates: bool
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    rates: bool,
+    origin: np.ndarray | None = None,
 ) -> Motion:
     """:func:`_solve_poses` over a path of inputs, with no silent change of assembly mode.
 
     The steps the closed-form dyads watch are looked into with finer steps
     (:func:`kinematics.solvers.branches.confirm_branches`); a path with steps coarser
     than the continuation step is first checked on intermediate poses, positions
-    only; a path that starts away from the sketch, from the sketch on. A single
-    pose keeps the sketch's mode without a path to check.
+    only, from its origin on (the sketch, when None; else a change point, which
+    is not solved itself). A path from the sketch that starts away from it is
+    looked into from the sketch to its first row too. A single pose keeps the
+    sketch's mode without a path to check.
     """
-    positions = _positions_of(plan)
+    positions = _positions_of(plan, guess if origin is not None else None)
     watch: list = []
     motion = _precise_errors(
         plan, inputs, lambda found: _solve_poses(plan, inputs, guess, rates, found), watch
     )
-    if len(inputs) < 2:
+    if len(inputs) < 2 and origin is None:
         return motion
+    start = np.zeros(inputs.shape[1]) if origin is None else origin
     path = inputs
-    if _largest_step(plan, inputs) > CONTINUATION_STEP and len(
-        dense := densified(plan, inputs)[0]
+    if _largest_step(plan, inputs, start) > CONTINUATION_STEP and len(
+        dense := densified(plan, inputs, origin)[0]
     ) > len(inputs):
         path, watch = dense, []
         _precise_errors(plan, dense, lambda found: positions(dense, found), watch)
     if watch:
         branches.confirm_branches(plan, path, watch, positions)
-    if np.any(path[0] != 0.0):  # the step from the sketch to the first row, looked into too
+    if origin is None and np.any(path[0] != 0.0):  # the step from the sketch, looked into too
         head = np.vstack([np.zeros((1, path.shape[1])), path[:2]])
         watch = []
         _precise_errors(plan, head, lambda found: positions(head, found), watch)
@@ -218,18 +306,19 @@ def _checked(
     return motion
 
 
-def _largest_step(plan: SolvePlan, inputs: np.ndarray) -> float:
-    """The largest step between rows (and from the sketch to the first), in units of scale."""
+def _largest_step(plan: SolvePlan, inputs: np.ndarray, start: np.ndarray) -> float:
+    """The largest step between rows (and from ``start`` to the first), in units of scale."""
     scale = plan.driver_scale
-    first = float(np.max(np.abs(inputs[0]) / scale))
+    first = float(np.max(np.abs(inputs[0] - start) / scale))
     steps = np.abs(np.diff(inputs, axis=0))
     return max(first, float(np.max(steps / scale)) if steps.size else 0.0)
 
 
-def _positions_of(plan: SolvePlan):
+def _positions_of(plan: SolvePlan, guess: Mapping[str, np.ndarray] | None = None):
     """``solve(rows, watch, groups)``: the plan's positions at ``rows``, watched steps to ``watch``.
 
-    With ``groups`` (labels), only the steps up to the last of them are solved.
+    With ``groups`` (labels), only the steps up to the last of them are solved;
+    ``guess`` starts Newton at the first row.
     """
 
     def positions(rows: np.ndarray, watch: list | None, groups=None) -> Motion:
@@ -237,7 +326,7 @@ def _positions_of(plan: SolvePlan):
         if groups:
             last = max(i for i, step in enumerate(plan.steps) if step.label in groups)
             part = dataclasses.replace(plan, steps=plan.steps[: last + 1])
-        return _solve_poses(part, rows, None, False, watch)
+        return _solve_poses(part, rows, guess, False, watch)
 
     return positions
 

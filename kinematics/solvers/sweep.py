@@ -34,6 +34,7 @@ from .memory import BYTES_PER_POSE_ITEM, check_poses, memory_limit
 from .plan import SolvePlan
 from .planar import cross, norm, rotate_many, units
 from .solve import solve_poses
+from .travel import cycle_inputs
 
 __all__ = [
     "BYTES_PER_POSE_ITEM",
@@ -194,8 +195,11 @@ def sweep(
 ) -> Sweep:
     """Solve every pose of ``inputs`` (shape (poses,) or (poses, drivers)).
 
-    By default each rotating driver makes one turn from the sketch in
-    ``steps`` equal steps (a sliding driver stays at the sketch). With
+    By default the drivers go through one cycle from the sketch in ``steps``
+    equal steps (:func:`~kinematics.solvers.travel.cycle_inputs`): a turning
+    driver one turn (several drivers at the ratio of the speeds the file
+    gives them, each a whole number of turns), a sliding driver alone its
+    stroke, from one dead point to the other (a little short of each). With
     ``rates`` false only the positions are solved (points' ``position``, links'
     ``angle``); a dyad's joint is then the closed form's own value, which the
     full sweep's (carried through a link's frame, as it always was) matches to
@@ -205,14 +209,15 @@ def sweep(
     ------
     SweepSizeError
         The poses would take more memory than a sweep may (:func:`memory_limit`).
+    TravelError
+        A sliding driver that cannot move from the sketch (no stroke to sweep).
     AssemblyError, SingularPoseError
         At the first pose that cannot be solved, naming it (a branch change
         is a :class:`~kinematics.errors.BranchChangeError`).
     """
     if inputs is None:
         _check_size(plan, steps, rates)
-        turn = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
-        inputs = np.column_stack([turn if d.kind == "R" else np.zeros(steps) for d in plan.drivers])
+        inputs = cycle_inputs(plan, steps)
     inputs = np.asarray(inputs, dtype=float)
     if inputs.ndim == 1:
         inputs = inputs[:, None]

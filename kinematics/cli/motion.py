@@ -18,12 +18,14 @@ from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 from ..explain.worked import explain_kinematics
+from ..html.cycle import inputs_text
+from ..html.phrases import say
 from ..results.serialization import exact_to_dict, state_to_dict
 from ..solvers.exact import solve_exact
 from ..solvers.plan import make_plan
 from ..solvers.solve import solve_pose
 from ..solvers.sweep import read_inputs, sweep
-from ..solvers.travel import cycle_span, driver_rates
+from ..solvers.travel import cycle_span, driver_rates, travel
 from .output import (
     EXIT_OK,
     EXIT_USAGE,
@@ -43,6 +45,7 @@ if TYPE_CHECKING:  # pragma: no cover - annotations only
     from ..solvers.plan import SolvePlan
     from ..solvers.solve import KinematicState
     from ..solvers.sweep import Sweep
+    from ..solvers.travel import Travel
 
 __all__ = ["run_animate", "run_kinematics", "run_sweep"]
 
@@ -213,14 +216,35 @@ def run_animate(args: argparse.Namespace) -> int:
         drawing = load_drawing("animate")
         report = analyze(read_edgelist(args.file))
         plan = make_plan(report)
+        notes = []
         if args.inputs:
             inputs = read_inputs(args.inputs, plan)
         else:
-            inputs = drawing.turn_inputs(plan, args.steps)
+            way = travel(plan, args.steps)
+            inputs = way.inputs
+            if not way.complete:
+                inputs = drawing.there_and_back(inputs)
+                notes.append(_stretch_note(plan, way))
         drawing.animate(report, plan, inputs, args.out, fps=args.fps)
     except MechanismError as exc:
         return fail(str(exc))
     except OSError as exc:
         return fail(f"cannot write {args.out}: {exc.strerror or exc}")
     sys.stdout.write(f"wrote {args.out}: {len(inputs)} frames at {args.fps:g} frames/s\n")
+    if notes:
+        write_lines(notes)
     return EXIT_OK
+
+
+def _stretch_note(plan: SolvePlan, way: Travel) -> str:
+    """What an animation of a stretch shows: how far the mechanism reaches, and there and back."""
+    low, high = (
+        say("en", f"limit_{limit.stop.name.lower()}", at=inputs_text(plan, limit.at),
+            group=limit.group)
+        for limit in way.limits or ()
+    )  # fmt: skip
+    what = "not a whole turn" if any(d.kind == "R" for d in plan.drivers) else "the stroke"
+    return (
+        f"{what}: the mechanism reaches from {low}, to {high}; the frames go over that "
+        "stretch and back"
+    )

@@ -75,11 +75,16 @@ class Stop(Enum):
 
 @dataclass(frozen=True)
 class Limit:
-    """One end of a stretch: the inputs of the last pose reached, what stops it, the message."""
+    """One end of a stretch: the inputs of the last pose reached, what stops it there.
+
+    ``group`` is the group that stops it (empty for a free slide), ``reason``
+    the error a little beyond.
+    """
 
     at: np.ndarray
     stop: Stop
     reason: str
+    group: str = ""
 
 
 @dataclass(frozen=True)
@@ -158,7 +163,7 @@ def cycle_inputs(plan: SolvePlan, steps: int) -> np.ndarray:
     span = cycle_span(plan, rates)
     if span is None:
         return travel(plan, steps).inputs
-    return np.linspace(0.0, span, steps, endpoint=False)[:, None] * rates[None, :]
+    return np.linspace(0.0, span, steps, endpoint=False)[:, None] * rates[None, :] + 0.0
 
 
 def travel(plan: SolvePlan, steps: int) -> Travel:
@@ -180,7 +185,7 @@ def travel(plan: SolvePlan, steps: int) -> Travel:
     rates = driver_rates(plan)
     span = cycle_span(plan, rates)
     if span is not None:
-        rows = np.linspace(0.0, span, steps, endpoint=False)[:, None] * rates[None, :]
+        rows = np.linspace(0.0, span, steps, endpoint=False)[:, None] * rates[None, :] + 0.0
         if _failure(plan, rows) is None:
             return Travel(rows, 0, True)
         search = span
@@ -194,7 +199,7 @@ def travel(plan: SolvePlan, steps: int) -> Travel:
     t = low + (np.arange(steps) + 0.5) * ((high - low) / steps)
     sketch = int(np.argmin(np.abs(t)))
     t[sketch] = 0.0  # the sketch among them (its neighbours half a step to one and a half away)
-    rows = t[:, None] * rates[None, :]
+    rows = t[:, None] * rates[None, :] + 0.0  # (no −0 for a driver turning back)
     return Travel(rows, sketch, False, limits)  # type: ignore[arg-type]
 
 
@@ -225,8 +230,9 @@ def reach(plan: SolvePlan, rates: np.ndarray, span: float, steps: int = _COARSE)
         else:
             bad, error = middle, failed
     beyond = _failure(plan, _path(good + 1e-6 * (span / n), rates))
-    stop = _stop_of(beyond if beyond is not None else error)
-    return Limit(good * rates, stop, str(beyond if beyond is not None else error))
+    if beyond is not None:
+        error = beyond
+    return Limit(good * rates, _stop_of(error), str(error), getattr(error, "group", ""))
 
 
 def _path(t: float, rates: np.ndarray) -> np.ndarray:

@@ -33,6 +33,7 @@ from structure.errors import MechanismError
 __all__ = [
     "DEAD_CENTRE",
     "AssemblyError",
+    "AssemblyModeError",
     "BranchChangeError",
     "IndeterminateError",
     "SingularPoseError",
@@ -162,3 +163,7 @@ class SweepSizeError(MechanismError):
 
 class TravelError(MechanismError):
     """The drivers cannot move a mechanism from its sketch either way: nothing to sweep."""
+
+
+class AssemblyModeError(MechanismError, ValueError):
+    """An assembly mode asked for that a group does not have at the sketch's inputs."""

@@ -23,7 +23,7 @@ from ..html.phrases import say
 from ..results.serialization import exact_to_dict, state_to_dict
 from ..solvers.exact import solve_exact
 from ..solvers.plan import make_plan
-from ..solvers.solve import solve_pose
+from ..solvers.solve import assembly_modes, solve_pose
 from ..solvers.sweep import read_inputs, sweep
 from ..solvers.travel import cycle_span, driver_rates, travel
 from .output import (
@@ -52,9 +52,17 @@ __all__ = ["run_animate", "run_kinematics", "run_sweep"]
 
 def run_kinematics(args: argparse.Namespace) -> int:
     """Solve the sketch pose of ``args.file`` group by group; returns the exit code."""
+    if args.exact and args.flip:
+        return fail(
+            "--exact solves the sketch pose, and --flip asks for another assembly mode than "
+            "the sketch's, whose coordinates are not exact: leave out one of them",
+            EXIT_USAGE,
+        )
     try:
         report = analyze(read_edgelist(args.file))
         plan = make_plan(report, flip=args.flip)
+        if args.modes:
+            return _print_modes(report, plan, args.json)
         if args.exact:
             return _print_exact(report, plan, args.json)
         state = solve_pose(plan)
@@ -64,7 +72,7 @@ def run_kinematics(args: argparse.Namespace) -> int:
             load_drawing().save_kinematics_sheet(report, plan, state, args.plot)
     except MechanismError as exc:
         return failed(exc, args.json)
-    except ValueError as exc:  # a --flip that names no dyad
+    except ValueError as exc:  # a --flip that names no group
         return fail(str(exc), EXIT_USAGE)
     if args.json:
         print_json(state_to_dict(state))
@@ -109,6 +117,39 @@ def _kinematics_lines(
             f"(|a| = {float(np.hypot(*point.acceleration)):.6g})"
         )
     return out
+
+
+def _print_modes(report: StructuralReport, plan: SolvePlan, as_json: bool) -> int:
+    """Print each group's assembly modes at the sketch's inputs: its inner pins in each."""
+    modes = assembly_modes(plan)
+    inner = {
+        step.label: [p.point for p in step.group.internal_pairs if p.point]
+        for step in plan.steps
+        if step.group is not None
+    }
+
+    def pins(label: str, mode) -> dict[str, list[float]]:
+        return {k: [float(x) for x in mode.pins[k]] for k in inner[label] if k in mode.pins}
+
+    if as_json:
+        print_json(
+            {
+                "modes": {
+                    label: [{"mode": m.index, "pins": pins(label, m)} for m in found]
+                    for label, found in modes.items()
+                }
+            }
+        )
+        return EXIT_OK
+    out = title_lines(report.mechanism, ", assembly modes at the sketch's inputs")
+    out.append("(--flip GROUP=K assembles a group in mode K; mode 0 is the one it takes itself)")
+    for label, found in modes.items():
+        out.append(f"  {label}: {len(found)} mode{'' if len(found) == 1 else 's'}")
+        for m in found:
+            where = ", ".join(f"{k} {vector(np.array(v))}" for k, v in pins(label, m).items())
+            out.append(f"    {m.index}: {where}")
+    write_lines(out)
+    return EXIT_OK
 
 
 def _print_exact(report: StructuralReport, plan: SolvePlan, as_json: bool) -> int:

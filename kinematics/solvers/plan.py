@@ -18,7 +18,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
 import numpy as np
@@ -29,10 +29,20 @@ from structure.meshes import meshes
 from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
+from ..errors import AssemblyModeError
 from .equations import Equation, slide_equations
 from .planar import unit_from_degrees
 
-__all__ = ["DriverStep", "GroupStep", "SolvePlan", "in_unit", "make_plan", "working_unit"]
+__all__ = [
+    "DriverStep",
+    "GroupStep",
+    "SolvePlan",
+    "in_unit",
+    "make_plan",
+    "parse_flip",
+    "single_mode_kinds",
+    "working_unit",
+]
 
 
 @dataclass(frozen=True)
@@ -88,7 +98,11 @@ class SolvePlan:
     ``points`` maps a point name to the link that carries it and its sketch
     coordinates; ``length`` is the sketch's size (for tolerances); ``flip``
     holds the labels of the dyads to assemble in the other mode than the
-    sketch's; ``higher_pairs`` the higher pairs replaced by virtual links,
+    sketch's, ``modes`` the other groups' assembly modes asked for
+    (:mod:`kinematics.solvers.modes`: ``{label: mode}``, mode 1 the next one
+    from the sketch's) and ``starts`` their links' poses at the sketch's inputs,
+    once found (:func:`kinematics.solvers.solve.solve_poses` finds them);
+    ``higher_pairs`` the higher pairs replaced by virtual links,
     whose replacement holds at the sketch pose only. ``unit`` is the length,
     in metres, that one unit of the plan's coordinates stands for (1: the
     file's metres; see :func:`in_unit`); a sliding driver's inputs, speed and
@@ -105,6 +119,10 @@ class SolvePlan:
     contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
     rolling: tuple[GroupStep, ...] | None = None
     unit: float = 1.0
+    modes: Mapping[str, int] = field(default_factory=lambda: MappingProxyType({}))
+    starts: Mapping[str, Mapping[str, np.ndarray]] = field(
+        default_factory=lambda: MappingProxyType({})
+    )
 
     @property
     def driver_kinds(self) -> tuple[str, ...]:
@@ -136,15 +154,22 @@ def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.
 def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     """The solve plan of a structural report whose mechanism has sketch coordinates.
 
-    ``flip`` names dyads (by label, e.g. ``'II(2,3)'``) to assemble in the
-    other mode than the sketch's.
+    ``flip`` names groups (by label) to assemble in another mode than the
+    sketch's: ``'II(2,3)'`` a dyad in its other one, ``'III(4,5,6,7)'`` a
+    triad or any other group in the next one found from the sketch's,
+    ``'III(4,5,6,7)=2'`` in mode 2 as
+    :func:`~kinematics.solvers.solve.assembly_modes` lists them. The modes of
+    the groups other than dyads are found when the plan is first solved.
 
     Raises
     ------
     EdgeListError
         A pair point without coordinates, or a P pair without ``angle=``.
+    AssemblyModeError
+        ``flip`` asks a dyad for a mode it does not have (a PRP or RPP dyad has
+        only one; any other dyad two).
     ValueError
-        ``flip`` names a group that is not a dyad of the plan.
+        ``flip`` names a group that is not a group of the plan, or cannot be read.
     """
     m = report.replaced
     problems: list[EdgeListProblem] = []
@@ -159,17 +184,18 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     ]
     if problems:
         raise EdgeListError(m.source, problems)
-    _check_flip(steps, flip)
+    dyads, modes = _check_flip(steps, flip)
     return SolvePlan(
         m,
         drivers,
         tuple(steps),
         MappingProxyType(_points(m)),
         _sketch_size(m),
-        frozenset(flip),
+        dyads,
         tuple(r.pair.label for r in report.replacements),
         _contacts(report),
         _rolling_steps(report, steps) if report.replacements else None,
+        modes=MappingProxyType(modes),
     )
 
 
@@ -256,13 +282,75 @@ def _sketch_size(m: Mechanism) -> float:
     return span if span > 0 else 1.0
 
 
-def _check_flip(steps: list[GroupStep], flip: Iterable[str]) -> None:
-    dyads = {s.label for s in steps if s.group is not None and s.group.kind is not None}
-    unknown = set(flip) - dyads
+#: dyads whose pairs place them in one way only (a linear system)
+single_mode_kinds = frozenset({"PRP", "RPP"})
+
+
+def parse_flip(flip: Iterable[str]) -> dict[str, int]:
+    """``{group label: mode}`` from ``flip``: ``'II(2,3)'`` (mode 1) or ``'III(4,5,6,7)=2'``.
+
+    >>> parse_flip(["II(2,3)", "III(4,5,6,7)=2"])
+    {'II(2,3)': 1, 'III(4,5,6,7)': 2}
+
+    Raises
+    ------
+    ValueError
+        A mode that is not a whole number from 1 on, or a group named twice
+        with different modes.
+    """
+    out: dict[str, int] = {}
+    for text in flip:
+        label, sep, number = str(text).partition("=")
+        label = label.strip()
+        mode = 1
+        if sep:
+            try:
+                mode = int(number.strip())
+            except ValueError:
+                mode = 0
+            if mode < 1:
+                raise ValueError(
+                    f"cannot read {text!r}: after '=' comes the number of an assembly mode, "
+                    "1 or more (mode 0 is the sketch's, which needs no --flip), as "
+                    "--modes lists them"
+                )
+        if out.get(label, mode) != mode:
+            raise ValueError(f"group {label} is given two assembly modes, {out[label]} and {mode}")
+        out[label] = mode
+    return out
+
+
+def _check_flip(
+    steps: list[GroupStep], flip: Iterable[str]
+) -> tuple[frozenset[str], dict[str, int]]:
+    """The dyads to flip, and the other groups' modes, that ``flip`` asks for."""
+    asked = parse_flip(flip)
+    groups = {s.label: s for s in steps if s.group is not None}
+    unknown = sorted(set(asked) - set(groups))
     if unknown:
         raise ValueError(
-            f"cannot flip {', '.join(sorted(unknown))}: the dyads are {', '.join(sorted(dyads))}"
+            f"cannot flip {', '.join(unknown)}: the groups are "
+            f"{', '.join(groups) or 'none (the mechanism has no Assur group)'}"
         )
+    dyads, modes = set(), {}
+    for label, mode in asked.items():
+        kind = groups[label].group.kind  # type: ignore[union-attr]
+        if kind in single_mode_kinds:
+            raise AssemblyModeError(
+                f"group {label}, a dyad ({kind}), has a single assembly mode: its two slides "
+                "and its pin place it in one way only, so there is no other to choose (leave "
+                "it out of --flip)"
+            )
+        if kind is not None and mode != 1:
+            raise AssemblyModeError(
+                f"group {label}, a dyad ({kind}), has two assembly modes, 0 (the sketch's) "
+                f"and 1 (the other), so there is no mode {mode} (write --flip '{label}')"
+            )
+        if kind is not None:
+            dyads.add(label)
+        else:
+            modes[label] = mode
+    return frozenset(dyads), modes
 
 
 def _contacts(report: StructuralReport) -> tuple[tuple[str, str, str, str | None], ...]:
@@ -358,6 +446,7 @@ def in_unit(plan: SolvePlan, unit: float) -> SolvePlan:
         for name, p in m.points.items()
     }
     mechanism = dataclasses.replace(m, points=points)
+    per = np.array([ratio, ratio, 1.0])
     drivers = tuple(dataclasses.replace(d, pivot=d.pivot / ratio) for d in plan.drivers)
     return dataclasses.replace(
         plan,
@@ -368,6 +457,12 @@ def in_unit(plan: SolvePlan, unit: float) -> SolvePlan:
         length=plan.length / ratio,
         rolling=None if plan.rolling is None else _steps_in(plan.rolling, ratio),
         unit=unit,
+        starts=MappingProxyType(
+            {
+                label: {link: np.asarray(p, dtype=float) / per for link, p in poses.items()}
+                for label, poses in plan.starts.items()
+            }
+        ),
     )
 
 

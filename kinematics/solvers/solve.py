@@ -39,11 +39,18 @@ import numpy as np
 
 from structure.errors import MechanismError
 
-from ..errors import DEAD_CENTRE, AssemblyError, BranchChangeError, SingularPoseError
+from ..errors import (
+    DEAD_CENTRE,
+    AssemblyError,
+    AssemblyModeError,
+    BranchChangeError,
+    SingularPoseError,
+)
 from ..results.state import KinematicState, LinkState, Motion, PointState
 from . import branches, dyads, triads
-from .equations import group_system
+from .equations import equation_point, group_system
 from .frames import Frame, LinkTable
+from .modes import STARTS, Mode, group_solutions
 from .newton import (
     CONTINUATION_STEP,
     angle_rows,
@@ -52,7 +59,7 @@ from .newton import (
     needs_continuation,
     scaled_jacobian,
 )
-from .plan import GroupStep, SolvePlan, in_unit, working_unit
+from .plan import GroupStep, SolvePlan, in_unit, single_mode_kinds, working_unit
 
 # the errors and the state types are defined in kinematics.errors and kinematics.results.state;
 # they stay importable from here
@@ -63,6 +70,7 @@ __all__ = [
     "Motion",
     "PointState",
     "SingularPoseError",
+    "assembly_modes",
     "solve_pose",
     "solve_poses",
 ]
@@ -132,6 +140,8 @@ def solve_poses(
     unit = working_unit(plan)
     if unit != plan.unit:
         return _solved_in(in_unit(plan, unit), inputs, guess, rates)
+    if len(plan.modes) > len(plan.starts):
+        plan = _with_starts(plan)
     if plan.higher_pairs and np.any(inputs != 0):
         if plan.rolling is None:
             raise MechanismError(
@@ -144,6 +154,108 @@ def solve_poses(
         # gear meshes roll: their virtual links give way to the rolling constraints
         plan = dataclasses.replace(plan, steps=plan.rolling, higher_pairs=())
     return _through(plan, inputs, guess, rates, None)
+
+
+def _with_starts(plan: SolvePlan) -> SolvePlan:
+    """The plan with the poses of the assembly modes its groups are asked for, at the sketch.
+
+    Group by group in solve order, the plan up to the group is solved at the
+    sketch's inputs (the groups before it in the modes asked for), and the
+    group's solutions there found (:func:`~kinematics.solvers.modes.group_solutions`).
+
+    Raises
+    ------
+    AssemblyModeError
+        A group has fewer modes than the one asked for.
+    """
+    starts: dict[str, Mapping[str, np.ndarray]] = dict(plan.starts)
+    for i, step in enumerate(plan.steps):
+        mode = plan.modes.get(step.label)
+        if mode is None or step.label in starts:
+            continue
+        found = _solutions_at_sketch(plan, i, starts)
+        if mode >= len(found):
+            raise AssemblyModeError(_too_few(step.label, len(found), mode))
+        starts[step.label] = found[mode]
+    return dataclasses.replace(plan, starts=MappingProxyType(starts))
+
+
+def _solutions_at_sketch(plan: SolvePlan, i: int, starts: Mapping) -> list[dict[str, np.ndarray]]:
+    """The solutions of step ``i`` at the sketch's inputs, the steps before it in their modes."""
+    step = plan.steps[i]
+    part = dataclasses.replace(
+        plan, steps=plan.steps[: i + 1], modes=MappingProxyType({}), starts=MappingProxyType(starts)
+    )
+    motion = _solve_poses(part, np.zeros((1, len(plan.drivers))), None, False)
+    touched = {link for eq in step.equations for link in (eq.a, eq.b, eq.carrier) if link}
+    known = {
+        link: np.asarray(motion.q[link][0], dtype=float)
+        for link in touched - set(step.links)
+        if link in motion.q
+    }
+    first = {link: np.asarray(motion.q[link][0], dtype=float) for link in step.links}
+    return group_solutions(step, part, known, first)
+
+
+def _too_few(label: str, count: int, mode: int) -> str:
+    """The message for a mode a group does not have."""
+    if count == 1:
+        return (
+            f"group {label} has a single assembly mode at the sketch's inputs (its closure "
+            f"equations have one solution there, found from {STARTS} starts of Newton's "
+            "method), so there is no other to choose: leave it out of --flip"
+        )
+    return (
+        f"group {label} has {count} assembly modes at the sketch's inputs, 0 to {count - 1} "
+        f"(see --modes), so there is no mode {mode}"
+    )
+
+
+def assembly_modes(plan: SolvePlan) -> dict[str, tuple[Mode, ...]]:
+    """Every group's assembly modes at the sketch's inputs, the groups before it as planned.
+
+    A dyad has two (0, the sketch's, and 1), a PRP or RPP dyad one; the other
+    groups' are found by :func:`~kinematics.solvers.modes.group_solutions`.
+    Mode 0 is the one the solve takes by itself; ``make_plan(report,
+    flip=[f"{label}={k}"])`` asks for mode k.
+    """
+    plan = _with_starts(plan) if len(plan.modes) > len(plan.starts) else plan
+    out: dict[str, tuple[Mode, ...]] = {}
+    for i, step in enumerate(plan.steps):
+        if step.group is None:
+            continue
+        if step.kind is None:
+            found = _solutions_at_sketch(plan, i, plan.starts)
+        else:
+            base = dataclasses.replace(plan, flip=plan.flip - {step.label})
+            ways = [base]
+            if step.kind not in single_mode_kinds:
+                ways.append(dataclasses.replace(base, flip=base.flip | {step.label}))
+            found = []
+            for way in ways:
+                part = dataclasses.replace(way, steps=way.steps[: i + 1])
+                motion = _solve_poses(part, np.zeros((1, len(plan.drivers))), None, False)
+                found.append({link: np.asarray(motion.q[link][0]) for link in step.links})
+        out[step.label] = tuple(
+            Mode(k, MappingProxyType(poses), MappingProxyType(_named_pins(plan, step, poses)))
+            for k, poses in enumerate(found)
+        )
+    return out
+
+
+def _named_pins(plan: SolvePlan, step: GroupStep, poses: Mapping[str, np.ndarray]) -> dict:
+    """The named points of a group's pairs, where the links' ``poses`` put them (m)."""
+    out = {}
+    for eq in step.equations:
+        name = equation_point(plan.mechanism, eq) if eq.kind in ("HINGE", "SLIDE") else None
+        link = eq.a if eq.a in poses else eq.b
+        if name is None or link not in poses:
+            continue
+        x, y, theta = (float(v) for v in poses[link])
+        c, s = np.cos(theta), np.sin(theta)
+        px, py = float(eq.point[0]), float(eq.point[1])
+        out[name] = np.array([x + c * px - s * py, y + s * px + c * py])
+    return out
 
 
 def _followed(
@@ -376,7 +488,8 @@ def _solve_poses(
         # looked up on the module at call time, so a test can switch a closed form off
         if dyads.frame_dyad(step, plan, frames, tables, pins, inputs, rates, watch):
             continue
-        if not (guess and any(link in guess for link in step.links)):
+        mode = plan.starts.get(step.label, {})
+        if not mode and not (guess and any(link in guess for link in step.links)):
             suspect = triads.frame_triad(step, plan, frames, tables, pins, inputs, rates)
             if suspect is not None:
                 if suspect.any():
@@ -384,7 +497,10 @@ def _solve_poses(
                 continue
         if not dyads.place_dyad(step, plan, q, inputs):
             start = {
-                link: np.array(guess[link], dtype=float) if guess and link in guess else np.zeros(3)
+                link: np.array(
+                    guess[link] if guess and link in guess else mode.get(link, np.zeros(3)),
+                    dtype=float,
+                )
                 for link in step.links
             }
             follow(step, plan, q, inputs, start)

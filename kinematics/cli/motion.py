@@ -205,7 +205,7 @@ def _cycle_text(plan: SolvePlan, inputs: np.ndarray) -> str:
             for k, d in enumerate(plan.drivers)
             if rates[k]
         )
-        return f"the stroke of the sliding driver(s), up to its dead points: {ends}"
+        return f"the stroke of the sliding driver(s) ({ends})"
     turns = rates * span / (2 * math.pi)
     if len(turns) == 1 or np.all(turns == 1.0):
         return "one turn of the driver(s)"

@@ -171,9 +171,17 @@ def _directions(v: np.ndarray) -> np.ndarray:
     return v / norm(v)[:, None]
 
 
+def _between(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """The angle between the rows of ``u`` and ``v`` (N, 2), in [0, π], to rounding at any angle.
+
+    ``atan2(|u × v|, u · v)``: unlike the arccosine of the dot product, as
+    exact near 0° and 180° as near 90°.
+    """
+    return np.arctan2(np.abs(cross(u, v)), np.einsum("ij,ij->i", u, v))
+
+
 def _angles(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
-    cos = np.einsum("ij,ij->i", _directions(c - b), _directions(c - d))
-    return np.arccos(np.clip(cos, -1.0, 1.0))
+    return _between(_directions(c - b), _directions(c - d))
 
 
 def _rrr_pins(plan: SolvePlan) -> dict[str, tuple[str, str, str]]:
@@ -376,10 +384,7 @@ def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.nda
             if u is None or len(pins) != 2 or not all(x in points for x in pins):
                 continue
             line = points[pins[1]]["position"] - points[pins[0]]["position"]
-            length = norm(line)
-            line = line / np.where(length > 0, length, 1.0)[:, None]
-            along = np.abs(np.einsum("ij,ij->i", line, u))
-            out[g.label] = np.pi / 2 - np.arccos(np.clip(along, 0.0, 1.0))
+            out[g.label] = _off_square(line, u)  # 90° less the angle between line and slide
             continue
         slides = [p for p in (*ext, mid) if p.kind.value == "P"]
         if len(slides) != 2:
@@ -387,9 +392,22 @@ def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.nda
         dirs = [_slide_direction(plan, motion, p.pair, p.links[0]) for p in slides]
         if any(d is None for d in dirs):
             continue
-        sine = np.abs(cross(dirs[0], dirs[1]))
-        out[g.label] = np.arcsin(np.clip(sine, 0.0, 1.0))
+        out[g.label] = _off_square(dirs[0], _turned_left(dirs[1]))  # the angle between them
     return out
+
+
+def _turned_left(u: np.ndarray) -> np.ndarray:
+    """The rows of ``u`` (N, 2) turned by 90°."""
+    return np.column_stack([-u[:, 1], u[:, 0]])
+
+
+def _off_square(v: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """How far the rows of ``v`` lean from square to the unit rows ``u``: asin(|v̂·u|), in [0, π/2].
+
+    ``atan2(|v·u|, |v × u|)``: exact to rounding at any angle, and ``v`` may
+    have any length (it is not squared); 0 for ``v`` zero.
+    """
+    return np.arctan2(np.abs(np.einsum("ij,ij->i", v, u)), np.abs(cross(v, u)))
 
 
 def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
@@ -415,9 +433,8 @@ def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
         guide = slide[0].links[1]
         theta = motion.q[guide][:, 2] if guide in motion.q else np.zeros(len(motion.inputs))
         u = units(pair.angle + theta)
-        rod = _directions(points[mid.point]["position"] - points[rod_pin[0].point]["position"])
-        along = np.abs(np.einsum("ij,ij->i", rod, u))
-        out[g.label] = np.arcsin(np.clip(along, 0.0, 1.0))
+        rod = points[mid.point]["position"] - points[rod_pin[0].point]["position"]
+        out[g.label] = _off_square(rod, u)
     return out
 
 

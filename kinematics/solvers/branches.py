@@ -58,6 +58,10 @@ _BUDGET = 2**20  # rows solved in all by one look into the watched steps
 _BOUNDARY_SPLITS = 64  # rows per round when closing in on a dead point
 _BOUNDARY_ROUNDS = 7  # 64^7 ≈ 4e12
 
+#: change points this close (rad, or sketch sizes) are one: a dead centre is found where the
+#: transmission angle's sine falls to DEAD_CENTRE (1e-6), about that far from the point itself
+_SAME_POINT = 1e-5
+
 #: what the error says happens at a change point
 MODES_MEET = (
     "its two assembly modes meet there (its joint comes into line with its outer pins: a "
@@ -261,6 +265,8 @@ def split_at(
     off = point / scale - (begins + np.clip(along, 0.0, 1.0)[:, None] * step)
     near = np.sqrt(np.einsum("ij,ij->i", off, off)) <= 1e-9 * (1.0 + np.sqrt(length2))
     on = near & (length2 > 0)
+    if origin is not None:  # the origin is a change point itself: one found there is that one
+        on[0] &= along[0] * np.sqrt(length2[0]) > _SAME_POINT
     if not on.any():
         return None
     k = int(np.argmax(on))

@@ -32,7 +32,7 @@ from .plan import GroupStep, SolvePlan
 __all__ = ["Mode", "group_solutions"]
 
 #: starts of Newton's method per group; the first is the solve's own solution
-STARTS = 512
+STARTS = 256
 _ITERATIONS = 60
 _TRUST = 0.5  # the largest Newton step: rad, or sketch sizes
 _SAME = 1e-6  # two solutions closer than this (rad, or sketch sizes) are one
@@ -67,20 +67,26 @@ def group_solutions(
     """
     length = plan.length
     angles = angle_rows(step.equations)
-    q = {link: np.broadcast_to(np.asarray(p, float), (starts, 3)) for link, p in known.items()}
-    q.update(_spread(step, first, starts))
+    poses = _spread(step, first, starts)
+    active = np.arange(starts)  # the starts still moving
     for _ in range(_ITERATIONS):
-        phi, jac, _, _ = group_system(step.links, step.equations, q, {}, starts)
-        phi = scaled_residual(phi, length, angles)
-        scaled = scaled_jacobian(jac, length, angles)
-        dz = -np.einsum("nij,nj->ni", np.linalg.pinv(scaled), phi)
+        q = {
+            link: np.broadcast_to(np.asarray(p, float), (len(active), 3))
+            for link, p in known.items()
+        }
+        q.update({link: poses[link][active] for link in step.links})
+        phi, jac, _, _ = group_system(step.links, step.equations, q, {}, len(active))
+        dz = -_solved(scaled_jacobian(jac, length, angles), scaled_residual(phi, length, angles))
         size = np.max(np.abs(dz), axis=1)
         dz *= np.minimum(1.0, _TRUST / np.where(size > 0, size, 1.0))[:, None]
         dz[:, 2::3] /= length
         for i, link in enumerate(step.links):
-            q[link] = q[link] + dz[:, 3 * i : 3 * i + 3]
-        if float(np.max(size)) <= 1e-13:
+            poses[link][active] += dz[:, 3 * i : 3 * i + 3]
+        active = active[~(size <= 1e-12)]
+        if not len(active):
             break
+    q = {link: np.broadcast_to(np.asarray(p, float), (starts, 3)) for link, p in known.items()}
+    q.update(poses)
     found = [dict(first)]
     phi, jac, _, _ = group_system(step.links, step.equations, q, {}, starts)
     closed = np.max(np.abs(scaled_residual(phi, length, angles)), axis=1) <= 1e-9 * length
@@ -90,6 +96,16 @@ def group_solutions(
         if solution is not None and not any(_same(solution, s, step, length) for s in found):
             found.append(solution)
     return sorted(found, key=lambda s: _distance(s, first, step, length))
+
+
+def _solved(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Batched ``jac·x = rhs`` (square: by LU, the singular ones by least squares)."""
+    if jac.shape[1] == jac.shape[2]:
+        try:
+            return np.linalg.solve(jac, rhs[..., None])[..., 0]
+        except np.linalg.LinAlgError:
+            pass
+    return np.einsum("nij,nj->ni", np.linalg.pinv(jac), rhs)
 
 
 def _spread(step: GroupStep, first: Mapping[str, np.ndarray], starts: int) -> dict:

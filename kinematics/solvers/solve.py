@@ -308,7 +308,7 @@ def _through(
         return _followed(plan, inputs, guess, rates, origin)
     except BranchChangeError as exc:
         dyads.layout_discarded()
-        split = branches.split_at(plan, inputs, origin, exc)
+        split = _first_split(plan, inputs, guess, origin, exc)
         if split is None:
             raise
         k, point, ahead = split
@@ -320,6 +320,37 @@ def _through(
             raise
         after = _through(modes[0], inputs[k:], start, rates, point)
         return _joined(inputs, before, after)
+
+
+def _first_split(
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    origin: np.ndarray | None,
+    error: BranchChangeError,
+):
+    """:func:`~kinematics.solvers.branches.split_at` at the first change point along the path.
+
+    The error names a change point, not always the first one the path meets
+    (a long step may pass several); the way up to just short of it is solved
+    again, positions only, until no change point comes before.
+    """
+    for _ in range(64):
+        split = branches.split_at(plan, inputs, origin, error)
+        if split is None:
+            return None
+        k, point, _ = split
+        before = inputs[k - 1] if k else (np.zeros_like(point) if origin is None else origin)
+        short = point + CONTINUATION_STEP * 1e-3 * (before - point) / max(
+            float(np.max(np.abs(before - point) / plan.driver_scale)), 1e-300
+        )
+        try:
+            _followed(plan, np.vstack([inputs[:k], short[None, :]]), guess, False, origin)
+        except BranchChangeError as earlier:
+            error = earlier
+            continue
+        return split
+    return None
 
 
 def _goes_on(plan: SolvePlan, ahead: np.ndarray, start, origin: np.ndarray) -> bool:

@@ -220,6 +220,11 @@ def reach(plan: SolvePlan, rates: np.ndarray, span: float, steps: int = _COARSE)
     good, bad = (t[k - 1] if k else 0.0), float(t[k])
     if k and _failure(plan, _path(good, rates)) is not None:
         good = 0.0
+    if good == 0.0:  # blocked right at the sketch? then no halving is needed
+        nudge = bad * 2.0**-_BISECTIONS
+        failed = _failure(plan, _path(nudge, rates))
+        if failed is not None:
+            return Limit(0.0 * rates, _stop_of(failed), str(failed), getattr(failed, "group", ""))
     for _ in range(_BISECTIONS):
         middle = 0.5 * (good + bad)
         if middle in (good, bad):

@@ -38,6 +38,7 @@ from fractions import Fraction
 import numpy as np
 
 from ..errors import AssemblyError, BranchChangeError, SingularPoseError, TravelError
+from .memory import check_poses
 from .plan import SolvePlan
 from .solve import solve_poses
 
@@ -61,7 +62,8 @@ FREE_TRAVEL = 1.0
 #: at most this many of the fastest)
 MOST_TURNS = 12
 _BISECTIONS = 24  # halvings of the step in which a limit lies: 6e-8 of it
-_COARSE = 24  # poses of the first look along a search
+_COARSE = 24  # poses of the first look along a search, at least
+_COARSE_MOST = 1024  # and at most
 
 
 class Stop(Enum):
@@ -179,9 +181,12 @@ def travel(plan: SolvePlan, steps: int) -> Travel:
     ------
     TravelError
         The drivers cannot move from the sketch either way.
+    SweepSizeError
+        ``steps`` poses would not fit in the memory a sweep may take.
     MechanismError
         The sketch itself cannot be solved (or a cam's profile is missing).
     """
+    check_poses(plan, steps, rates=True)
     rates = driver_rates(plan)
     span = cycle_span(plan, rates)
     if span is not None:
@@ -206,12 +211,12 @@ def travel(plan: SolvePlan, steps: int) -> Travel:
 def reach(plan: SolvePlan, rates: np.ndarray, span: float, steps: int = _COARSE) -> Limit:
     """How far along ``t·rates`` (t from 0 to ``span``, either sign) the mechanism goes.
 
-    The path is looked along in ``steps`` poses (at least :data:`_COARSE`);
+    The path is looked along in ``steps`` poses (from 24 to 1024);
     the first pose that cannot be solved is closed in on by halving, from
     the last one that can, to within 6e-8 of a step. What stops it there is
     told by the error a little further on (:class:`Stop`).
     """
-    n = max(steps, _COARSE)
+    n = min(max(steps, _COARSE), _COARSE_MOST)
     t = np.linspace(0.0, span, n + 1)[1:]
     error = _failure(plan, t[:, None] * rates[None, :])
     if error is None:

@@ -47,7 +47,7 @@ from structure.model import PairKind
 
 from ..errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
-from .paths import suspect_steps
+from .paths import Watch, suspect_steps
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
 
@@ -240,8 +240,15 @@ def _watch_dips(solve: _FrameSolve, h2) -> None:
     if solve.watch is None or not isinstance(h2, np.ndarray) or len(h2) < 3:
         return
     plan = solve.plan
-    breaks = getattr(solve.watch, "breaks", None)
-    steps = suspect_steps(solve.inputs / plan.driver_scale, h2 / plan.length**2, breaks)
+    watch = solve.watch if isinstance(solve.watch, Watch) else None
+    steps = suspect_steps(
+        solve.inputs,
+        h2,
+        None if watch is None else watch.breaks,
+        path_scale=plan.driver_scale,
+        value_scale=plan.length**2,
+        watch=watch,
+    )
     if len(steps):
         solve.watch.append((solve.step.label, steps))
 

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["Watch", "suspect_steps"]
+__all__ = ["Watch", "is_straight", "suspect_steps"]
 
 
 class Watch(list):
@@ -46,36 +46,56 @@ class Watch(list):
     def __init__(self, breaks: np.ndarray | None = None) -> None:
         super().__init__()
         self.breaks = np.zeros(0, dtype=int) if breaks is None else np.asarray(breaks, dtype=int)
+        self._path: np.ndarray | None = None
+        self._straight = False
+
+    def straight(self, path: np.ndarray) -> bool:
+        """Whether ``path`` is one run (:func:`is_straight`), found once for the solve's path."""
+        if path is not self._path:
+            self._path, self._straight = path, is_straight(path) and not len(self.breaks)
+        return self._straight
 
 
 def suspect_steps(
-    path: np.ndarray, values: np.ndarray, breaks: np.ndarray | None = None
+    path: np.ndarray,
+    values: np.ndarray,
+    breaks: np.ndarray | None = None,
+    *,
+    path_scale: np.ndarray | float = 1.0,
+    value_scale: float = 1.0,
+    watch: Watch | None = None,
 ) -> np.ndarray:
     """The steps of ``path`` (N, drivers) where ``values`` (N,) may dip to zero between rows.
 
-    ``path`` is in units of scale (radians, or the sketch's size), ``values``
-    dimensionless (a squared length over the sketch's size squared), both
-    sampled at the rows. At each local minimum of a run's samples (and at a
-    run's end when the end is lowest), a parabola through the minimum and its
-    two neighbours, by their distances along the run, gives the low point
-    between them; when that lies between two samples and is no higher than
-    the rise over one step (how far the higher neighbour stands above the
-    minimum), the two steps beside the minimum are suspect. A run of one step
-    is suspect when its lower value is no higher than its rise. A path of
-    fewer than three distinct rows is not looked into.
+    ``path / path_scale`` is in units of scale (radians, or the sketch's
+    size), ``values / value_scale`` dimensionless (a squared length over the
+    sketch's size squared), both sampled at the rows. At each local minimum
+    of a run's samples (and at a run's end when the end is lowest), a
+    parabola through the minimum and its two neighbours, by their distances
+    along the run, gives the low point between them; when that lies between
+    two samples and is no higher than the rise over one step (how far the
+    higher neighbour stands above the minimum), the two steps beside the
+    minimum are suspect. A run of one step is suspect when its lower value is
+    no higher than its rise. A path of fewer than three distinct rows is not
+    looked into. ``watch`` keeps whether the path is one run, for the next
+    quantity sampled along the same path.
 
     Returns the suspect steps' indices (step k: from row k to row k + 1),
     sorted.
     """
     n = len(values)
-    if n < 3 or not _has_low(values):
+    lows = _lows(values) if n >= 3 else ()
+    if not len(lows):
         return np.zeros(0, dtype=int)
+    unbroken = breaks is None or not len(breaks)
+    if watch.straight(path) if watch is not None else unbroken and is_straight(path):
+        return _straight_dips(lows, path, values, path_scale, value_scale)
     moved = np.any(path[1:] != path[:-1], axis=1)
     rows = np.concatenate([[0], np.flatnonzero(moved) + 1])  # each row once
     m = len(rows)
     if m < 3:
         return np.zeros(0, dtype=int)
-    x, y = path[rows], values[rows]
+    x, y = path[rows] / path_scale, values[rows] / value_scale
     step = np.diff(x, axis=0)  # (m − 1, drivers)
     length = np.sqrt(np.einsum("ij,ij->i", step, step))
     jump = np.zeros(m - 1, dtype=bool)  # a step across a break of the path
@@ -98,21 +118,53 @@ def suspect_steps(
     return rows[out + 1] - 1  # the step into the row after, from the last repeat of the row before
 
 
-def _has_low(y: np.ndarray) -> bool:
-    """Whether the samples have a local minimum or an end below its neighbour.
+def _lows(y: np.ndarray) -> np.ndarray:
+    """The middles of the triples of samples whose middle (or an end) is lowest.
 
-    Samples that fall or rise all along have neither, on any run they could
-    be cut into (a run turning back rises again from its turn): nothing to
-    look into then, and a long sweep is done with one pass.
+    Samples that fall or rise all along have none, on any run they could be
+    cut into (a run turning back rises again from its turn): nothing to look
+    into then, and a long sweep is done with one pass.
     """
     mid = y[1:-1]
-    return bool(y[0] < y[1] or y[-1] < y[-2] or ((mid <= y[:-2]) & (mid <= y[2:])).any())
+    c = np.flatnonzero((mid <= y[:-2]) & (mid <= y[2:])) + 1
+    ends = [k for k, low in ((1, y[0] < y[1]), (len(y) - 2, y[-1] < y[-2])) if low]
+    return np.unique(np.concatenate([c, np.array(ends, dtype=int)])) if ends else c
 
 
-def _dips(y, length, jump, turn, starts, ends) -> np.ndarray:
-    """The steps beside the triples' minima whose parabola dips low between samples."""
+def is_straight(path: np.ndarray) -> bool:
+    """Whether every step of ``path`` goes on the way of the one before: one run.
+
+    (No row repeated, no turn back; a sweep's rows, as a rule.)
+    """
+    step = np.diff(path, axis=0)
+    if step.shape[1] == 1:
+        on = step[:-1, 0] * step[1:, 0]
+    else:
+        on = np.einsum("ij,ij->i", step[:-1], step[1:])
+    return bool((on > 0.0).all())
+
+
+def _straight_dips(c, path, values, path_scale, value_scale) -> np.ndarray:
+    """The suspect steps of a path of one run, looked at only at its samples' lows ``c``.
+
+    The test of :func:`_dips` at far fewer places: a long sweep's samples
+    have a few local minima, and only they (and a lowest end) are looked into.
+    """
+    x0, x1, x2 = (path[k] / path_scale for k in (c - 1, c, c + 1))
+    p = np.sqrt(np.einsum("ij,ij->i", x1 - x0, x1 - x0))
+    q = np.sqrt(np.einsum("ij,ij->i", x2 - x1, x2 - x1))
+    y0, y1, y2 = (values[k] / value_scale for k in (c - 1, c, c + 1))
+    near = _near(y0, y1, y2, p, q)
+    return np.unique(np.concatenate([c[near] - 1, c[near]]))
+
+
+def _dips(y, length, jump, turn, starts, ends, c=None) -> np.ndarray:
+    """The steps beside the triples' minima whose parabola dips low between samples.
+
+    ``c``: the middle samples to look at (all but the ends when None).
+    """
     m = len(y)
-    c = np.arange(1, m - 1)
+    c = np.arange(1, m - 1) if c is None else c
     valid = ~jump[c - 1] & ~jump[c] & ~turn[c]  # c − 1, c, c + 1 on one run
     y0, y1, y2 = y[c - 1], y[c], y[c + 1]
     low = (y1 <= y0) & (y1 <= y2)
@@ -120,7 +172,17 @@ def _dips(y, length, jump, turn, starts, ends) -> np.ndarray:
     low |= ends[c + 1] & (y2 < y1)  # its last
     keep = valid & low
     c, y0, y1, y2 = c[keep], y0[keep], y1[keep], y2[keep]
-    p, q = length[c - 1], length[c]
+    near = _near(y0, y1, y2, length[c - 1], length[c])
+    return np.concatenate([c[near] - 1, c[near]])
+
+
+def _near(y0, y1, y2, p, q) -> np.ndarray:
+    """Whether the parabola through (−p, y0), (0, y1), (q, y2) dips as low as its rise, between.
+
+    The rise is how far the higher neighbour stands above ``y1``: a minimum
+    well above it is a real one, which finer steps leave in place; a low point
+    outside the two steps is not on the way.
+    """
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         span = p * q * (p + q)
         a = (q * (y0 - y1) + p * (y2 - y1)) / span
@@ -130,8 +192,7 @@ def _dips(y, length, jump, turn, starts, ends) -> np.ndarray:
     rise = np.maximum(y0, y2) - y1
     between = (a > 0.0) & (vertex > -p) & (vertex < q) & (bottom <= rise)
     flat = ~(a > 0.0) & (np.minimum(np.minimum(y0, y1), y2) <= 0.0)
-    near = between | flat
-    return np.concatenate([c[near] - 1, c[near]])
+    return between | flat
 
 
 def _single_steps(y, starts, ends, jump) -> np.ndarray:

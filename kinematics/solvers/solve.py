@@ -59,6 +59,7 @@ from .newton import (
     needs_continuation,
     scaled_jacobian,
 )
+from .paths import Watch
 from .plan import GroupStep, SolvePlan, in_unit, single_mode_kinds, working_unit
 
 # the errors and the state types are defined in kinematics.errors and kinematics.results.state;
@@ -425,7 +426,7 @@ def _checked(
     sketch's mode without a path to check.
     """
     positions = _positions_of(plan, guess if origin is not None else None)
-    watch: list = []
+    watch: list = Watch()
     motion = _precise_errors(
         plan, inputs, lambda found: _solve_poses(plan, inputs, guess, rates, found), watch
     )
@@ -436,13 +437,13 @@ def _checked(
     if _largest_step(plan, inputs, start) > CONTINUATION_STEP and len(
         dense := densified(plan, inputs, origin)[0]
     ) > len(inputs):
-        path, watch = dense, []
+        path, watch = dense, Watch()
         _precise_errors(plan, dense, lambda found: positions(dense, found), watch)
     if watch:
         branches.confirm_branches(plan, path, watch, positions)
     if origin is None and np.any(path[0] != 0.0):  # the step from the sketch, looked into too
         head = np.vstack([np.zeros((1, path.shape[1])), path[:2]])
-        watch = []
+        watch = Watch()
         _precise_errors(plan, head, lambda found: positions(head, found), watch)
         if watch:
             branches.confirm_branches(plan, head, watch, positions)

@@ -101,3 +101,22 @@ def test_the_same_steps_whichever_way_the_path_is_travelled(zero, start, stop, s
 def test_the_samples_are_read_in_any_unit(scale):
     x = np.linspace(0.0, 1.0, 11)[:, None]
     assert set(suspect_steps(x, squared_distance(x, 0.55) * scale)) >= {5}
+
+
+@settings(max_examples=80, deadline=None)
+@given(
+    zeros=st.lists(st.floats(-0.5, 1.5), min_size=1, max_size=3),
+    steps=st.integers(3, 80),
+    drivers=st.integers(1, 2),
+    backward=st.booleans(),
+)
+def test_a_straight_path_is_looked_into_as_any_path_is(zeros, steps, drivers, backward):
+    # a path of one run takes a shorter way (its minima only): the same steps come out
+    t = np.linspace(0.0, 1.0, steps)
+    if backward:
+        t = t[::-1]
+    path = np.column_stack([t] + [0.5 * t] * (drivers - 1))
+    values = np.prod([(t - z) ** 2 + 1e-6 * k for k, z in enumerate(zeros)], axis=0)
+    fast = suspect_steps(path, values)
+    general = suspect_steps(path, values, np.array([-1]))  # a break that joins no rows
+    assert fast.tolist() == general.tolist()

@@ -54,18 +54,6 @@ def test_kinematics_plot_writes_the_sheet(tmp_path, capsys):
 
 
 # ------------------------------------------------------------------ animate (issue 22, item 16)
-DOUBLE_ROCKER = """driver 1 omega=2
-0 1 R A
-1 2 R B
-2 3 R C
-3 0 R D
-point A 0 0
-point B 0.0855050358314172 0.23492315519647708
-point C 0.18090038112534151 0.20492768726792232
-point D 0.4 0
-"""
-
-
 def frames_of(path) -> int:
     from PIL import Image
 
@@ -75,8 +63,7 @@ def frames_of(path) -> int:
 def test_animate_makes_the_five_bar_the_redundant_parallelogram_and_a_double_rocker(
     capsys, tmp_path
 ):
-    rocker = tmp_path / "rocker.edges"
-    rocker.write_text(DOUBLE_ROCKER)
+    rocker = FIXTURES / "double_rocker.edges"
     cases = {
         str(FIXTURES / "fivebar_two_drivers.edges"): 2 * 6 - 2,  # a stretch, there and back
         str(FIXTURES / "parallelogram_redundant.edges"): 6,  # a whole turn

@@ -21,18 +21,6 @@ from structure.report import analyze
 
 from ...conftest import FIXTURES
 
-DOUBLE_ROCKER = """
-driver 1 omega=2
-0 1 R A
-1 2 R B
-2 3 R C
-3 0 R D
-point A 0 0
-point B 0.0855050358314172 0.23492315519647708
-point C 0.18090038112534151 0.20492768726792232
-point D 0.4 0
-"""
-
 
 def fixture_plan(stem: str):
     return make_plan(analyze(read_edgelist(str(FIXTURES / f"{stem}.edges"))))
@@ -72,12 +60,13 @@ def test_a_parallelogram_with_a_third_crank_loops_a_whole_turn():
 
 
 def test_a_double_rocker_shows_its_stretch_between_dead_points_in_both_languages():
-    plan = make_plan(analyze(parse_edgelist(DOUBLE_ROCKER.strip().splitlines())))
+    plan = fixture_plan("double_rocker")
     cycle = solve_cycle(plan, 24)
     assert not cycle.complete
     # |BD|² = 0.25² + 0.4² − 0.2·cos φ between 0.2² and 0.4²: cos φ from 0.3125 to 0.9125,
-    # the crank starting at atan2(B) = 70°
-    start = math.degrees(math.atan2(0.23492315519647708, 0.0855050358314172))
+    # the crank starting at atan2(B)
+    bx, by = read_edgelist(str(FIXTURES / "double_rocker.edges")).coordinates("B")
+    start = math.degrees(math.atan2(by, bx))
     low, high = (math.degrees(math.acos(c)) - start for c in (0.9125, 0.3125))
     assert [math.degrees(float(limit.at[0])) for limit in cycle.limits] == pytest.approx(
         [low, high], abs=1e-5

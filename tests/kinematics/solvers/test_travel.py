@@ -41,19 +41,6 @@ CRANK, ROD = 0.1, math.hypot(0.1732, 0.1)
 # C stays on the x axis right of A, at |AC| from ROD − CRANK (folded) to ROD + CRANK (stretched)
 STROKE = (ROD - CRANK - 0.1732, ROD + CRANK - 0.1732)
 
-#: a Grashof double-rocker (the coupler 2 is the shortest link) driven at rocker 1
-DOUBLE_ROCKER = """
-driver 1 omega=2
-0 1 R A
-1 2 R B
-2 3 R C
-3 0 R D
-point A 0 0
-point B 0.0855050358314172 0.23492315519647708
-point C 0.18090038112534151 0.20492768726792232
-point D 0.4 0
-"""
-
 
 def plan_of(text: str):
     return make_plan(analyze(parse_edgelist(text.strip().splitlines())))
@@ -158,11 +145,12 @@ point D 0.6 0
 
 # ------------------------------------------------------------------ a turning driver's stretch
 def test_a_double_rocker_driven_as_a_crank_reaches_between_two_dead_points():
-    way = travel(plan_of(DOUBLE_ROCKER), 48)
+    way = travel(fixture_plan("double_rocker"), 48)
     assert not way.complete
     # |BD|² = 0.25² + 0.4² − 2·0.25·0.4·cos φ must lie in [(0.3 − 0.1)², (0.3 + 0.1)²]:
-    # cos φ from 0.3125 to 0.9125; the crank starts at 70° (atan2 of B)
-    start = math.degrees(math.atan2(0.23492315519647708, 0.0855050358314172))
+    # cos φ from 0.3125 to 0.9125; the crank starts at atan2 of B
+    bx, by = read_edgelist(str(FIXTURES / "double_rocker.edges")).coordinates("B")
+    start = math.degrees(math.atan2(by, bx))
     low = math.degrees(math.acos(0.9125)) - start
     high = math.degrees(math.acos(0.3125)) - start
     limits = [math.degrees(float(limit.at[0])) for limit in way.limits]

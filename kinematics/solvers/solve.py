@@ -220,6 +220,21 @@ def assembly_modes(plan: SolvePlan) -> dict[str, tuple[Mode, ...]]:
     Mode 0 is the one the solve takes by itself; ``make_plan(report,
     flip=[f"{label}={k}"])`` asks for mode k.
     """
+    unit = working_unit(plan)
+    if unit != plan.unit:  # found in a unit near the sketch's size, given back in metres
+        found = assembly_modes(in_unit(plan, unit))
+        per = np.array([unit, unit, 1.0])
+        return {
+            label: tuple(
+                Mode(
+                    m.index,
+                    MappingProxyType({k: v * per for k, v in m.poses.items()}),
+                    MappingProxyType({k: v * unit for k, v in m.pins.items()}),
+                )
+                for m in modes
+            )
+            for label, modes in found.items()
+        }
     plan = _with_starts(plan) if len(plan.modes) > len(plan.starts) else plan
     out: dict[str, tuple[Mode, ...]] = {}
     for i, step in enumerate(plan.steps):

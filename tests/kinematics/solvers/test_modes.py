@@ -9,6 +9,7 @@ triad's link lengths; a flipped triad then sweeps on from its mode.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 
@@ -167,3 +168,15 @@ def test_the_command_lists_the_modes_and_flips_a_triad(capsys):
     assert err.startswith("error: group III(4,5,6,7) has 4 assembly modes") and "mode 9" in err
     assert main(["kinematics", str(FIXTURES / "fourbar.edges"), "--flip", "II(9,9)"]) == 2
     assert "the groups are II(2,3)" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("k", [1e-300, 1e120])
+def test_the_modes_are_the_same_in_any_unit_of_length(k):
+    m = read_edgelist(str(EIGHTBAR))
+    points = {n: dataclasses.replace(p, x=p.x * k, y=p.y * k) for n, p in m.points.items()}
+    far = assembly_modes(make_plan(analyze(dataclasses.replace(m, points=points))))[TRIAD]
+    near = assembly_modes(make_plan(analyze(m)))[TRIAD]
+    assert len(far) == len(near)
+    for a, b in zip(far, near, strict=True):
+        for name in ("T45", "T56", "T57"):
+            np.testing.assert_allclose(a.pins[name] / k, b.pins[name], rtol=1e-9, atol=1e-12)

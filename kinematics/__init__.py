@@ -34,10 +34,12 @@ _PUBLIC_BY_MODULE = {
         "Motion",
         "PointState",
         "SingularPoseError",
+        "assembly_modes",
         "solve_pose",
         "solve_poses",
     ),
     "solvers.sweep": ("Sweep", "parse_inputs", "read_inputs", "sweep", "transmission_angle"),
+    "solvers.travel": ("Travel", "cycle_inputs", "travel"),
     "kinetostatics.forces": (
         "ForceSolution",
         "ForceSweep",

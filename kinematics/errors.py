@@ -33,6 +33,7 @@ from structure.errors import MechanismError
 __all__ = [
     "DEAD_CENTRE",
     "AssemblyError",
+    "AssemblyModeError",
     "BaseCircleError",
     "BranchChangeError",
     "CamGeometryError",
@@ -44,6 +45,7 @@ __all__ = [
     "SingularPoseError",
     "StallError",
     "SweepSizeError",
+    "TravelError",
     "UndercutError",
     "inputs_text",
 ]
@@ -216,3 +218,11 @@ class StallError(NoSteadyRunningError):
 
 class IntegrationError(DynamicsError):
     """An integration of the equation of motion that is stiff, diverges or takes too long."""
+
+
+class TravelError(MechanismError):
+    """The drivers cannot move a mechanism from its sketch either way: nothing to sweep."""
+
+
+class AssemblyModeError(MechanismError, ValueError):
+    """An assembly mode asked for that a group does not have at the sketch's inputs."""

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 from structure.errors import MechanismError
 
 from .. import figures
-from ..figures.animation import animate, turn_inputs
+from ..figures.animation import animate, there_and_back, turn_inputs
 from ..figures.cam import cam_sheet
 from ..figures.dynamics import balance_sheet, dynamics_sheet
 from ..solvers.plan import make_plan
@@ -39,6 +39,7 @@ __all__ = [
     "save_mechanism_drawing",
     "save_structure_sheet",
     "save_sweep_figure",
+    "there_and_back",
     "turn_inputs",
 ]
 

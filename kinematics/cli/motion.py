@@ -7,6 +7,7 @@ of one pose; the ranges over a sweep and its CSV; an animation of the turn.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from typing import TYPE_CHECKING
 
@@ -17,11 +18,14 @@ from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
 from ..explain.worked import explain_kinematics
+from ..html.cycle import inputs_text
+from ..html.phrases import say
 from ..results.serialization import exact_to_dict, state_to_dict
 from ..solvers.exact import EXACT_TIMEOUT, solve_exact
 from ..solvers.plan import make_plan
-from ..solvers.solve import solve_pose
+from ..solvers.solve import assembly_modes, solve_pose
 from ..solvers.sweep import read_inputs, sweep
+from ..solvers.travel import cycle_span, driver_rates, travel
 from .output import (
     EXIT_OK,
     EXIT_USAGE,
@@ -41,19 +45,25 @@ if TYPE_CHECKING:  # pragma: no cover - annotations only
     from ..solvers.plan import SolvePlan
     from ..solvers.solve import KinematicState
     from ..solvers.sweep import Sweep
+    from ..solvers.travel import Travel
 
 __all__ = ["run_animate", "run_kinematics", "run_sweep"]
 
 
 def run_kinematics(args: argparse.Namespace) -> int:
     """Solve the sketch pose of ``args.file`` group by group; returns the exit code."""
+    if args.exact and args.flip:
+        return fail(
+            "--exact solves the sketch pose, and --flip asks for another assembly mode than "
+            "the sketch's, whose coordinates are not exact: leave out one of them",
+            EXIT_USAGE,
+        )
     try:
         report = analyze(read_edgelist(args.file))
         plan = make_plan(report, flip=args.flip)
+        if args.modes:
+            return _print_modes(report, plan, args.json)
         if args.exact:
-            if args.flip:
-                return fail("--exact answers at the sketch's assembly: it cannot take --flip",
-                            EXIT_USAGE)  # fmt: skip
             return _print_exact(report, plan, args.json, args.exact_timeout)
         state = solve_pose(plan)
         check_finite(state_to_dict(state))
@@ -62,7 +72,7 @@ def run_kinematics(args: argparse.Namespace) -> int:
             load_drawing().save_kinematics_sheet(report, plan, state, args.plot)
     except MechanismError as exc:
         return failed(exc, args.json)
-    except ValueError as exc:  # a --flip that names no dyad
+    except ValueError as exc:  # a --flip that names no group
         return fail(str(exc), EXIT_USAGE)
     if args.json:
         print_json(state_to_dict(state))
@@ -109,6 +119,39 @@ def _kinematics_lines(
     return out
 
 
+def _print_modes(report: StructuralReport, plan: SolvePlan, as_json: bool) -> int:
+    """Print each group's assembly modes at the sketch's inputs: its inner pins in each."""
+    modes = assembly_modes(plan)
+    inner = {
+        step.label: [p.point for p in step.group.internal_pairs if p.point]
+        for step in plan.steps
+        if step.group is not None
+    }
+
+    def pins(label: str, mode) -> dict[str, list[float]]:
+        return {k: [float(x) for x in mode.pins[k]] for k in inner[label] if k in mode.pins}
+
+    if as_json:
+        print_json(
+            {
+                "modes": {
+                    label: [{"mode": m.index, "pins": pins(label, m)} for m in found]
+                    for label, found in modes.items()
+                }
+            }
+        )
+        return EXIT_OK
+    out = title_lines(report.mechanism, ", assembly modes at the sketch's inputs")
+    out.append("(--flip GROUP=K assembles a group in mode K; mode 0 is the one it takes itself)")
+    for label, found in modes.items():
+        out.append(f"  {label}: {len(found)} mode{'' if len(found) == 1 else 's'}")
+        for m in found:
+            where = ", ".join(f"{k} {vector(np.array(v))}" for k, v in pins(label, m).items())
+            out.append(f"    {m.index}: {where}")
+    write_lines(out)
+    return EXIT_OK
+
+
 def _print_exact(
     report: StructuralReport, plan: SolvePlan, as_json: bool, timeout: float | None
 ) -> int:
@@ -145,7 +188,7 @@ def run_sweep(args: argparse.Namespace) -> int:
         check_finite(result.as_dict())
         if args.plot:
             load_drawing().save_sweep_figure(result, plan, args.plot)
-        out = _sweep_lines(args, result)  # the sweep's ranges and balancing, computed when read
+        out = _sweep_lines(args, plan, result)  # the ranges and balancing, computed when read
     except MechanismError as exc:
         return fail(str(exc))
     if args.csv:
@@ -159,12 +202,44 @@ def run_sweep(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _sweep_lines(args: argparse.Namespace, result: Sweep) -> list[str]:
+def _cycle_text(plan: SolvePlan, inputs: np.ndarray) -> str:
+    """What the default sweep covers: one turn, a cycle of several drivers, or a stroke."""
+    rates = driver_rates(plan)
+    span = cycle_span(plan, rates)
+    if span is None:
+        ends = ", ".join(
+            f"{d.link} from {inputs[0, k]:.4g} m to {inputs[-1, k]:.4g} m"
+            for k, d in enumerate(plan.drivers)
+            if rates[k]
+        )
+        return f"the stroke of the sliding driver(s) ({ends})"
+    turns = rates * span / (2 * math.pi)
+    if len(turns) == 1 or np.all(turns == 1.0):
+        return "one turn of the driver(s)"
+    each = ", ".join(
+        f"{d.link} {_turns_text(t) if d.kind == 'R' else f'{t * 2 * math.pi:.4g} m'}"
+        for d, t in zip(plan.drivers, turns, strict=True)
+    )
+    return f"one cycle of the drivers, at the ratio of their speeds ({each})"
+
+
+def _turns_text(turns: float) -> str:
+    """``2 turns``, ``1 turn back``, ``held``."""
+    if turns == 0:
+        return "held"
+    count = f"{abs(turns):.4g} turn{'' if abs(turns) == 1 else 's'}"
+    return count if turns > 0 else f"{count} back"
+
+
+def _sweep_lines(args: argparse.Namespace, plan: SolvePlan, result: Sweep) -> list[str]:
     """The text answer of a sweep: the ranges of ω, ε, transmission angles and balancing."""
     if args.inputs:
         out = [f"{len(result.inputs)} poses of {args.inputs} for {args.file}", ""]
     else:
-        out = [f"{args.steps} poses over one turn of the driver(s) of {args.file}", ""]
+        out = [
+            f"{len(result.inputs)} poses over {_cycle_text(plan, result.inputs)} of {args.file}",
+            "",
+        ]
     out.append("link   ω min … max (rad/s)        ε min … max (rad/s²)")
     for name, values in result.links.items():
         w, e = values["omega"], values["epsilon"]
@@ -189,14 +264,35 @@ def run_animate(args: argparse.Namespace) -> int:
         drawing = load_drawing("animate")
         report = analyze(read_edgelist(args.file))
         plan = make_plan(report)
+        notes = []
         if args.inputs:
             inputs = read_inputs(args.inputs, plan)
         else:
-            inputs = drawing.turn_inputs(plan, args.steps)
+            way = travel(plan, args.steps)
+            inputs = way.inputs
+            if not way.complete:
+                inputs = drawing.there_and_back(inputs)
+                notes.append(_stretch_note(plan, way))
         drawing.animate(report, plan, inputs, args.out, fps=args.fps)
     except MechanismError as exc:
         return fail(str(exc))
     except OSError as exc:
         return fail(f"cannot write {args.out}: {exc.strerror or exc}")
     sys.stdout.write(f"wrote {args.out}: {len(inputs)} frames at {args.fps:g} frames/s\n")
+    if notes:
+        write_lines(notes)
     return EXIT_OK
+
+
+def _stretch_note(plan: SolvePlan, way: Travel) -> str:
+    """What an animation of a stretch shows: how far the mechanism reaches, and there and back."""
+    low, high = (
+        say("en", f"limit_{limit.stop.name.lower()}", at=inputs_text(plan, limit.at),
+            group=limit.group)
+        for limit in way.limits or ()
+    )  # fmt: skip
+    what = "not a whole turn" if any(d.kind == "R" for d in plan.drivers) else "the stroke"
+    return (
+        f"{what}: the mechanism reaches from {low}, to {high}; the frames go over that "
+        "stretch and back"
+    )

@@ -169,7 +169,14 @@ def _kinematics_arguments(command: argparse.ArgumentParser) -> None:
         action="append",
         metavar="GROUP",
         default=[],
-        help="assemble this dyad (e.g. 'II(2,3)') in the other mode than the sketch's",
+        help="assemble this group in another mode than the sketch's: 'II(2,3)' a dyad in "
+        "its other one, 'III(4,5,6,7)' a triad or larger group in the next one found from "
+        "the sketch's, 'III(4,5,6,7)=2' in mode 2 as --modes lists them (repeat for several)",
+    )
+    command.add_argument(
+        "--modes",
+        action="store_true",
+        help="list each group's assembly modes at the sketch's inputs, for --flip GROUP=K",
     )
     _add_explain(command)
 
@@ -254,7 +261,8 @@ def _convert_arguments(parser: argparse.ArgumentParser) -> None:
         action="append",
         metavar="GROUP",
         default=[],
-        help="assemble this dyad (e.g. 'II(2,3)') in the other mode than the sketch's",
+        help="assemble this group in another mode than the sketch's, as for "
+        "'assur kinematics --flip'",
     )
     parser.add_argument("--steps", type=int, default=360, help="poses per turn (default 360)")
     parser.add_argument(

@@ -40,17 +40,21 @@ from structure.report import StructuralReport
 from ..solvers.plan import SolvePlan
 from ..solvers.solve import Motion, solve_poses
 from ..solvers.sweep import Sweep
+from ..solvers.travel import travel
 from .scene import Scene, draw_scene
 from .style import Poses, unit_text
 
-__all__ = ["animate", "turn_inputs"]
+__all__ = ["animate", "there_and_back", "turn_inputs"]
 
 
 def turn_inputs(plan: SolvePlan, steps: int) -> np.ndarray:
-    """Inputs (steps, drivers) for one turn of each rotating driver.
+    """Inputs (frames, drivers) for an animation of one cycle of the drivers.
 
-    A sliding driver moves to and fro by a fifth of the sketch's size
-    (``0.2·plan.length·sin``), since it has no natural stroke.
+    The cycle of :func:`kinematics.solvers.travel.travel`: one turn of a
+    turning driver (several at the ratio of the speeds the file gives them),
+    a sliding driver's stroke. A mechanism that cannot make the whole cycle
+    goes over the stretch it reaches and back (:func:`there_and_back`), so
+    that the animation loops without a jump.
 
     >>> from structure import parse_edgelist
     >>> from structure.report import analyze
@@ -61,9 +65,17 @@ def turn_inputs(plan: SolvePlan, steps: int) -> np.ndarray:
     """
     if steps < 1:
         raise ValueError(f"steps must be at least 1, got {steps}")
-    turn = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
-    columns = [turn if d.kind == "R" else 0.2 * plan.length * np.sin(turn) for d in plan.drivers]
-    return np.column_stack(columns) if columns else np.zeros((steps, 0))
+    way = travel(plan, steps)
+    return way.inputs if way.complete else there_and_back(way.inputs)
+
+
+def there_and_back(rows: np.ndarray) -> np.ndarray:
+    """The rows, then back over them to the second (a loop without repeating either end).
+
+    >>> there_and_back(np.array([[0.0], [1.0], [2.0], [3.0]])).ravel().tolist()
+    [0.0, 1.0, 2.0, 3.0, 2.0, 1.0]
+    """
+    return np.concatenate([rows, rows[-2:0:-1]])
 
 
 class _CanvasPillowWriter(PillowWriter):

@@ -1,11 +1,12 @@
-"""The cycle a report shows: a turn of the driver(s), or as much of it as the mechanism allows.
+"""The cycle a report shows: the drivers' cycle, or as much of it as the mechanism allows.
 
-:func:`solve_cycle` sweeps one turn of each rotating driver (a sliding one
-moves to and fro, as in :func:`kinematics.figures.animation.turn_inputs`).
-When a pose cannot be assembled or is a dead centre, the cycle is the
-stretch the mechanism can reach from the sketch: forward up to the first pose
-that fails and backward likewise, joined into one run of poses, with the
-error that stopped it kept to say so.
+:func:`solve_cycle` sweeps one cycle of the drivers
+(:func:`kinematics.solvers.travel.travel`: a turning driver one turn, several
+at the ratio of their speeds, a sliding driver its stroke). When the
+mechanism cannot make the whole cycle, the cycle is the stretch it reaches
+from the sketch, backward and forward to the first pose each way it cannot
+take, and the two limits say what stops it there (a dead point, a change
+point, a singular pose).
 
 >>> from structure import analyze, parse_edgelist
 >>> from kinematics import make_plan
@@ -24,13 +25,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import AssemblyError, SingularPoseError
-from ..figures.animation import turn_inputs
 from ..solvers.plan import SolvePlan
 from ..solvers.solve import solve_poses
 from ..solvers.sweep import Sweep, sweep
+from ..solvers.travel import Limit, travel
+from .phrases import say
 
-__all__ = ["Cycle", "inputs_text", "solve_cycle"]
+__all__ = ["Cycle", "inputs_text", "solve_cycle", "stretch_text"]
 
 
 @dataclass(frozen=True)
@@ -39,8 +40,9 @@ class Cycle:
 
     ``sweep`` holds the kinematics of every pose (:func:`kinematics.solvers.sweep.sweep`),
     ``poses[link]`` each link's pose ``(x, y, θ)`` (shape (poses, 3)); ``sketch``
-    is the index of the sketch's pose; ``complete`` is true for a whole turn (the
-    poses loop), false for a stretch, which ``stop`` (the error at its end) explains.
+    is the index of the sketch's pose; ``complete`` is true for a whole cycle (the
+    poses loop), false for a stretch, whose ends ``limits`` (backward, forward)
+    give, and ``stop`` the errors beyond them.
     """
 
     sweep: Sweep
@@ -48,45 +50,27 @@ class Cycle:
     sketch: int
     complete: bool
     stop: str = ""
-
-
-def _reachable(plan: SolvePlan, rows: np.ndarray) -> tuple[int, str]:
-    """How many of ``rows`` (from the first) solve in one run, and the error after them."""
-    end, stop = len(rows), ""
-    while end > 1:
-        try:
-            solve_poses(plan, rows[:end])
-        except (AssemblyError, SingularPoseError) as exc:
-            stop = stop or str(exc)
-            failed = np.asarray(exc.pose if exc.pose is not None else rows[end - 1], dtype=float)
-            apart = (rows[:end] - failed.reshape(1, -1)) / plan.driver_scale  # radians, sizes
-            nearest = int(np.argmin(np.linalg.norm(apart, axis=1)))
-            end = max(1, min(end - 1, nearest))
-            continue
-        return end, stop
-    return 1, stop
+    limits: tuple[Limit, Limit] | None = None
 
 
 def solve_cycle(plan: SolvePlan, steps: int) -> Cycle:
-    """The report's cycle of ``steps`` poses per turn, or the stretch the mechanism reaches.
+    """The report's cycle of ``steps`` poses, or the stretch the mechanism reaches.
 
     Raises
     ------
     MechanismError
         The mechanism cannot move away from the sketch at all (a cam, whose profile
-        the format does not hold), or the forces over the cycle are indeterminate.
+        the format does not hold; a driver blocked both ways), or the forces over
+        the cycle are indeterminate.
     """
-    forward = turn_inputs(plan, steps)
-    ahead, stop = _reachable(plan, forward)
-    if ahead == len(forward):
-        rows, sketch, complete = forward, 0, True
-    else:
-        behind, _ = _reachable(plan, -forward)
-        rows = np.concatenate([-forward[1:behind][::-1], forward[:ahead]])
-        sketch, complete = behind - 1, False
+    way = travel(plan, steps)
+    rows = way.inputs
     motion = solve_poses(plan, rows)
     poses = {link: np.asarray(q, dtype=float) for link, q in motion.q.items()}
-    return Cycle(sweep(plan, rows), poses, sketch, complete, stop)
+    stop = ""
+    if way.limits is not None:
+        stop = "; ".join(dict.fromkeys(limit.reason for limit in way.limits if limit.reason))
+    return Cycle(sweep(plan, rows), poses, way.sketch, way.complete, stop, way.limits)
 
 
 def inputs_text(plan: SolvePlan, row: np.ndarray) -> str:
@@ -99,8 +83,31 @@ def inputs_text(plan: SolvePlan, row: np.ndarray) -> str:
     'φ1 = 30°'
     """
     return ", ".join(
-        f"φ{d.link} = {math.degrees(float(x)):.4g}°"
+        f"φ{d.link} = {math.degrees(float(x)) + 0.0:.4g}°"
         if d.kind == "R"
-        else f"s{d.link} = {float(x):.4g} m"
+        else f"s{d.link} = {float(x) + 0.0:.4g} m"
         for d, x in zip(plan.drivers, row, strict=False)
     )
+
+
+def stretch_text(plan: SolvePlan, cycle: Cycle, lang: str) -> str:
+    """What a cycle that is not whole shows: how far the mechanism reaches and what stops it.
+
+    >>> from structure import analyze, parse_edgelist
+    >>> from kinematics import make_plan
+    >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+    ...                     "point A 0 0", "point B 0.0855 0.2349", "point C 0.1809 0.2049",
+    ...                     "point D 0.4 0"])
+    >>> plan = make_plan(analyze(m))
+    >>> print(stretch_text(plan, solve_cycle(plan, 8), "en"))  # doctest: +NORMALIZE_WHITESPACE
+    Not a whole turn: the mechanism reaches from φ1 = -45.86°, a dead point of group II(2,3),
+    to φ1 = 1.789°, a dead point of group II(2,3). The poses shown go from φ1 = -42.88° to
+    φ1 = 0°.
+    """
+    first, last = (inputs_text(plan, row) for row in cycle.sweep.inputs[[0, -1]])
+    ends = {}
+    for side, limit in zip(("low", "high"), cycle.limits or (), strict=False):
+        key = f"limit_{limit.stop.name.lower()}"
+        ends[side] = say(lang, key, at=inputs_text(plan, limit.at), group=limit.group)
+    turning = any(d.kind == "R" for d in plan.drivers)
+    return say(lang, "partial" if turning else "stroke", start=first, end=last, **ends)

@@ -24,7 +24,7 @@ from ..figures import sweep_figure
 from .animation import animation_html
 from .camdesign import cams_html
 from .contents import ReportContents, part_note
-from .cycle import inputs_text
+from .cycle import stretch_text
 from .dynamics import dynamics_html
 from .gearing import gears_html
 from .markup import element, note
@@ -46,9 +46,7 @@ def _cycle_html(contents: ReportContents, lang: str) -> str:
     parts.append(element("p", escape(say(lang, "animation_help", count=count))))
     animation = animation_html(contents.report, plan, cycle, lang)
     if not cycle.complete:
-        start, end = (inputs_text(plan, row) for row in cycle.sweep.inputs[[0, -1]])
-        text = say(lang, "partial", reason=cycle.stop, start=start, end=end)
-        parts.append(note(text, "partial"))
+        parts.append(note(stretch_text(plan, cycle, lang), "partial"))
     parts.append(animation)
     caption = say(lang, "h_plots")
     parts.append(element("h3", escape(caption)))

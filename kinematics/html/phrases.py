@@ -118,7 +118,18 @@ _ENGLISH: dict[str, str] = {
     "play": "Play",
     "pause": "Pause",
     "pose_slider": "pose",
-    "partial": "Not a whole turn: {reason}. The poses shown go from {start} to {end}.",
+    "partial": (
+        "Not a whole turn: the mechanism reaches from {low}, to {high}. The poses shown go "
+        "from {start} to {end}."
+    ),
+    "stroke": (
+        "The stroke of the sliding driver: from {low}, to {high}. The poses shown go from "
+        "{start} to {end}."
+    ),
+    "limit_dead_point": "{at}, a dead point of group {group}",
+    "limit_change_point": "{at}, a change point of group {group} (two assembly modes meet)",
+    "limit_singular": "{at}, a singular pose of group {group}",
+    "limit_free": "{at} (the mechanism does not stop the slide)",
     # gears
     "h_meshes": "Meshes",
     "h_willis": "Willis relations, one per mesh in its carrier's frame",
@@ -250,7 +261,17 @@ _VIETNAMESE: dict[str, str] = {
     "play": "Chạy",
     "pause": "Dừng",
     "pose_slider": "vị trí",
-    "partial": "Không quay được trọn vòng: {reason}. Các vị trí vẽ từ {start} đến {end}.",
+    "partial": (
+        "Không quay được trọn vòng: cơ cấu chỉ đi được từ {low}, đến {high}. Các vị trí vẽ từ "
+        "{start} đến {end}."
+    ),
+    "stroke": (
+        "Hành trình của khâu dẫn trượt: từ {low}, đến {high}. Các vị trí vẽ từ {start} đến {end}."
+    ),
+    "limit_dead_point": "{at}, một điểm chết của nhóm {group}",
+    "limit_change_point": "{at}, một điểm rẽ nhánh của nhóm {group} (hai dạng lắp ráp gặp nhau)",
+    "limit_singular": "{at}, một vị trí suy biến của nhóm {group}",
+    "limit_free": "{at} (cơ cấu không chặn con trượt)",
     "h_meshes": "Các cặp bánh răng ăn khớp",
     "h_willis": (
         "Công thức Willis, mỗi cặp ăn khớp một phương trình, trong hệ quy chiếu gắn với cần"

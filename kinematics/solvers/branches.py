@@ -19,25 +19,32 @@ The solves are handed in as ``solve(rows, watch, groups)``: positions of the
 plan at the driver inputs ``rows`` (N, drivers), appending watched steps to
 ``watch``, solving the groups up to the last of ``groups`` (all if None).
 
->>> import numpy as np
+>>> import dataclasses
+
+import numpy as np
 >>> subdivided(np.array([[0.0]]), np.array([[0.8]]), 4).ravel().round(6).tolist()
 [0.0, 0.2, 0.4, 0.6, 0.8]
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 
 import numpy as np
 
 from ..errors import AssemblyError, BranchChangeError, SingularPoseError, inputs_text
 from .dyads import NOT_CLOSED
+from .newton import CONTINUATION_STEP
+from .paths import Watch
 from .plan import SolvePlan
 
 __all__ = [
     "change_point",
     "confirm_branches",
+    "either_mode",
     "is_change_point",
+    "split_at",
     "subdivided",
     "unassembled_range",
 ]
@@ -46,8 +53,14 @@ Solver = Callable[..., object]
 
 _SUBSTEPS = 8  # finer steps per watched step, at each level
 _LEVELS = 16  # 8^16: far below the resolution of the inputs
+_LEVEL_STEPS = 256  # watched steps looked into at once
+_BUDGET = 2**20  # rows solved in all by one look into the watched steps
 _BOUNDARY_SPLITS = 64  # rows per round when closing in on a dead point
 _BOUNDARY_ROUNDS = 7  # 64^7 ≈ 4e12
+
+#: change points this close (rad, or sketch sizes) are one: a dead centre is found where the
+#: transmission angle's sine falls to DEAD_CENTRE (1e-6), about that far from the point itself
+_SAME_POINT = 1e-5
 
 #: what the error says happens at a change point
 MODES_MEET = (
@@ -84,7 +97,14 @@ def confirm_branches(plan: SolvePlan, inputs: np.ndarray, watch: list, solve: So
     """Look into the watched steps with finer ones; raise at a change of assembly mode.
 
     ``watch`` holds ``(group label, step indices)`` from the solve of ``inputs``
-    (step k goes from row k to row k + 1).
+    (step k goes from row k to row k + 1). Each level solves the watched
+    steps cut into :data:`_SUBSTEPS` pieces, as one path whose pieces are
+    joined by breaks (:class:`~kinematics.solvers.paths.Watch`), and keeps the
+    pieces where the dyads still see a dip. At most :data:`_LEVEL_STEPS` steps
+    are looked into at once (the first along the path; the others wait their
+    turn), and at most :data:`_BUDGET` rows are solved in all: samples that
+    keep dipping beyond that (a group lying along its change point, within
+    rounding) stop the sweep at the first of them, as a change point.
 
     Raises
     ------
@@ -96,12 +116,19 @@ def confirm_branches(plan: SolvePlan, inputs: np.ndarray, watch: list, solve: So
         A stretch between two poses cannot be assembled (its range is named).
     """
     steps = np.array(sorted({int(k) for _, ks in watch for k in ks}))
-    starts, ends = inputs[steps], inputs[steps + 1]
     groups = {g for g, _ in watch}
-    label = watch[0][0]
-    for _ in range(_LEVELS):
+    pending = [(inputs[steps], inputs[steps + 1], watch[0][0], 0)]
+    solved = 0
+    while pending:
+        starts, ends, label, level = pending.pop(0)
+        if len(starts) > _LEVEL_STEPS:  # the first ones now, the others after them
+            pending.insert(0, (starts[_LEVEL_STEPS:], ends[_LEVEL_STEPS:], label, level))
+            starts, ends = starts[:_LEVEL_STEPS], ends[:_LEVEL_STEPS]
+        if level == _LEVELS or solved > _BUDGET:
+            raise change_point(plan, label, (starts[0] + ends[0]) / 2)
         rows = subdivided(starts, ends)
-        found: list = []
+        solved += len(rows)
+        found = Watch(np.arange(_SUBSTEPS, len(rows) - 1, _SUBSTEPS + 1))
         try:
             solve(rows, found, groups)
         except SingularPoseError as exc:
@@ -118,12 +145,10 @@ def confirm_branches(plan: SolvePlan, inputs: np.ndarray, watch: list, solve: So
         inner = sorted(
             {int(k) for _, ks in found for k in ks if int(k) % (_SUBSTEPS + 1) != _SUBSTEPS}
         )
-        if not inner:
-            return
-        label = next(g for g, ks in found if int(inner[0]) in {int(k) for k in ks})
-        index = np.array(inner)
-        starts, ends = rows[index], rows[index + 1]
-    raise change_point(plan, label, (starts[0] + ends[0]) / 2)
+        if inner:
+            first = next(g for g, ks in found if int(inner[0]) in {int(k) for k in ks})
+            index = np.array(inner)
+            pending.insert(0, (rows[index], rows[index + 1], first, level + 1))
 
 
 def _range_of(plan: SolvePlan, path: np.ndarray, group: str, solve: Solver) -> AssemblyError:
@@ -201,3 +226,56 @@ def unassembled_range(
         error.indices,
     )
     return out
+
+
+def either_mode(plan: SolvePlan, group: str) -> list[SolvePlan]:
+    """``plan`` with the dyad ``group`` in its assembly mode, and in the other one.
+
+    Empty when ``group`` is not a dyad the closed forms assemble by mode (a
+    change point of another group cannot be gone past by choosing its mode).
+    """
+    dyads = {s.label for s in plan.steps if s.group is not None and s.group.kind is not None}
+    if group not in dyads:
+        return []
+    return [plan, dataclasses.replace(plan, flip=plan.flip ^ {group})]
+
+
+def split_at(
+    plan: SolvePlan, inputs: np.ndarray, origin: np.ndarray | None, error: BranchChangeError
+) -> tuple[int, np.ndarray, np.ndarray] | None:
+    """Where the path of ``inputs`` (from ``origin``, else the sketch) meets a change point.
+
+    Returns ``(k, point, ahead)``: the change point lies on the step into row
+    ``k`` (from row k − 1, or from the origin for k = 0); ``point`` is it (the
+    pose ``error`` names), and
+    ``ahead`` a few poses from it toward row k, no farther than one
+    continuation step, to try the ways on. None when the error names no pose
+    on the path, or a row lies on the change point itself.
+    """
+    if error.pose is None:
+        return None
+    point = np.asarray(error.pose, dtype=float)
+    scale = plan.driver_scale
+    start = np.zeros(inputs.shape[1]) if origin is None else np.asarray(origin, dtype=float)
+    ends = inputs / scale
+    begins = np.vstack([start[None, :] / scale, ends[:-1]])
+    step = ends - begins
+    length2 = np.einsum("ij,ij->i", step, step)
+    along = np.einsum("ij,ij->i", point / scale - begins, step) / np.where(length2 > 0, length2, 1)
+    off = point / scale - (begins + np.clip(along, 0.0, 1.0)[:, None] * step)
+    near = np.sqrt(np.einsum("ij,ij->i", off, off)) <= 1e-9 * (1.0 + np.sqrt(length2))
+    on = near & (length2 > 0)
+    if origin is not None:  # the origin is a change point itself: one found there is that one
+        on[0] &= along[0] * np.sqrt(length2[0]) > _SAME_POINT
+    if not on.any():
+        return None
+    k = int(np.argmax(on))
+    if not 1e-12 < along[k] < 1.0 - 1e-12:  # a row (or the origin) on the change point itself
+        return None
+    toward = inputs[k] - point
+    span = float(np.max(np.abs(toward) / scale))
+    if span <= 0.0:
+        return None
+    reach = min(1.0, CONTINUATION_STEP / span)
+    ahead = point + np.array([0.25, 0.5, 0.75, 1.0])[:, None] * reach * toward
+    return k, point, ahead

@@ -47,6 +47,7 @@ from structure.model import PairKind
 
 from ..errors import DEAD_CENTRE, AssemblyError, SingularPoseError
 from .frames import GROUND_FRAME, Frame, LinkTable, frame_of_columns, unwrapped
+from .paths import Watch, suspect_steps
 from .plan import GroupStep, SolvePlan
 from .planar import cross, rotate_many, unit, vectors
 
@@ -58,6 +59,7 @@ __all__ = [
     "known_frame",
     "known_pin",
     "laid_out",
+    "layout_discarded",
     "place_dyad",
 ]
 
@@ -94,6 +96,19 @@ def laid_out(layout: PointLayout) -> Iterator[PointLayout]:
     finally:
         _LAYOUT.reset(token)
         layout.owner = None  # the owner refers to the layout: no cycle to wait for the collector
+
+
+def layout_discarded() -> None:
+    """Forget what a solve that failed wrote into the current layout (its rows are free again).
+
+    A solve that writes the named points into a sweep's layout and then fails
+    (a change point found after the poses were solved) leaves rows that the
+    solve the sweep goes on with, in pieces, must not take for its own.
+    """
+    layout = _LAYOUT.get()
+    if layout is not None:
+        layout.filled.clear()
+        layout.owner = None
 
 
 class PinCache(dict):
@@ -216,45 +231,26 @@ def _watch_dips(solve: _FrameSolve, h2) -> None:
     distance of its joint from the line of its roots; for an RRR dyad with
     equal links also the distance between its outer pins). It is smooth along
     the inputs while both modes exist, and touches zero where they meet (a
-    change point) or dips below where the dyad cannot close. At each local
-    minimum of the samples, a parabola through it and its neighbours gives the
-    low point between them; when that is no higher than the rise over one
-    step, the two steps beside it are appended to ``solve.watch`` for the
-    solve to look into with finer steps (:mod:`kinematics.solvers.branches`).
+    change point) or dips below where the dyad cannot close. The steps
+    :func:`~kinematics.solvers.paths.suspect_steps` finds, measured in the
+    sketch's size (so in any unit of length), are appended to
+    ``solve.watch`` for the solve to look into with finer steps
+    (:mod:`kinematics.solvers.branches`).
     """
     if solve.watch is None or not isinstance(h2, np.ndarray) or len(h2) < 3:
         return
-    mid = h2[1:-1]
-    low = np.flatnonzero((mid <= h2[:-2]) & (mid <= h2[2:])) + 1
-    ends = [k for k, j in ((0, 1), (len(h2) - 1, len(h2) - 2)) if h2[k] < h2[j]]
-    if not len(low) and not ends:
-        return
-    k = np.concatenate([low, np.array(ends, dtype=int)])
-    c = np.clip(k, 1, len(h2) - 2)  # the middle of the three samples
-    inputs = solve.inputs / solve.plan.driver_scale
-    before = np.linalg.norm(inputs[c] - inputs[c - 1], axis=1)
-    after = np.linalg.norm(inputs[c + 1] - inputs[c], axis=1)
-    near = _parabola_low(before, after, h2[c - 1], h2[c], h2[c + 1])
-    if near.any():
-        steps = np.concatenate([k[near] - 1, k[near]])
-        steps = steps[(steps >= 0) & (steps < len(h2) - 1)]
-        solve.watch.append((solve.step.label, np.unique(steps)))
-
-
-def _parabola_low(p, q, y0, y1, y2) -> np.ndarray:
-    """Whether the parabola through (−p, y0), (0, y1), (q, y2) comes as low as the rise beside y1.
-
-    The rise is how far the higher neighbour stands above ``y1``: a minimum
-    that is well above it is a real one, which finer steps leave in place.
-    Arrays of as many triples as there are local minima.
-    """
-    with np.errstate(divide="ignore", invalid="ignore"):
-        span = p * q * (p + q)
-        a = (q * (y0 - y1) + p * (y2 - y1)) / span
-        b = (p * p * (y2 - y1) - q * q * (y0 - y1)) / span
-        vertex = np.minimum(y1 - b * b / (4.0 * a), y1)
-    low = np.where(a > 0.0, vertex, np.minimum(np.minimum(y0, y1), y2))
-    return (low <= np.maximum(y0, y2) - y1) | (span <= 0.0)
+    plan = solve.plan
+    watch = solve.watch if isinstance(solve.watch, Watch) else None
+    steps = suspect_steps(
+        solve.inputs,
+        h2,
+        None if watch is None else watch.breaks,
+        path_scale=plan.driver_scale,
+        value_scale=plan.length**2,
+        watch=watch,
+    )
+    if len(steps):
+        solve.watch.append((solve.step.label, steps))
 
 
 def _arrays(n: int, *values):
@@ -455,13 +451,15 @@ def _circle_circle(
     t = ey * ey
     d2 += t
     inv = np.sqrt(d2)
-    np.reciprocal(inv, out=inv)
+    with np.errstate(divide="ignore", invalid="ignore"):  # pins that meet: refused just below
+        np.reciprocal(inv, out=inv)
     along = d2
     along += len1 - len2
     along *= inv
     along *= 0.5
-    h = np.multiply(along, along, out=t)
-    np.subtract(len1, h, out=h)
+    with np.errstate(invalid="ignore"):
+        h = np.multiply(along, along, out=t)
+        np.subtract(len1, h, out=h)
     low = h.min()
     if not low >= -tol:  # NaN too: pins that coincide with unequal links
         raise _not_assembled(step, solve.plan, inputs, ~(h >= -tol))

@@ -31,6 +31,7 @@ import numpy as np
 
 from ..errors import AssemblyError
 from .equations import Equation, group_residual, group_system
+from .memory import check_poses
 from .plan import GroupStep, SolvePlan
 
 __all__ = [
@@ -99,8 +100,8 @@ def newton_pose(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -
     """
     tol = 1e-13 * plan.length
     angles = angle_rows(step.equations)
-    norm = math.inf
-    for _ in range(_MAX_NEWTON):
+    norm, taken = math.inf, 0
+    for taken in range(1, _MAX_NEWTON + 1):  # noqa: B007 - the count is reported
         phi, jac, _, _ = group_system(step.links, step.equations, q, {}, 1)
         phi = scaled_residual(phi, plan.length, angles)
         norm = float(np.linalg.norm(phi))
@@ -108,20 +109,23 @@ def newton_pose(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray) -
             return
         dz = np.linalg.lstsq(scaled_jacobian(jac, plan.length, angles)[0], -phi[0], rcond=None)[0]
         dz[2::3] /= plan.length
-        _line_search(step, plan.length, q, dz, norm)
+        if not _line_search(step, plan.length, q, dz, norm):
+            break  # no step along dz lowers the residual: Newton is stuck
     if norm > 1e-9 * plan.length:
         raise AssemblyError.at(
             step.label,
             inputs,
-            f"its pairs do not close (residual {norm:.3g} m after {_MAX_NEWTON} Newton steps)",
+            f"its pairs do not close (residual {norm * plan.unit:.3g} m after {taken} Newton "
+            "steps)",
             plan.driver_kinds,
         )
 
 
-def _line_search(step: GroupStep, length: float, q: dict, dz: np.ndarray, norm: float) -> None:
+def _line_search(step: GroupStep, length: float, q: dict, dz: np.ndarray, norm: float) -> bool:
     """Move the group's links along the Newton step ``dz``, halved until the residual drops.
 
     The residual is measured as :func:`newton_pose` measures it (angle rows × ``length``).
+    Returns whether it dropped (else the links are left at the smallest step tried).
     """
     angles = angle_rows(step.equations)
     base = {link: q[link].copy() for link in step.links}
@@ -131,8 +135,10 @@ def _line_search(step: GroupStep, length: float, q: dict, dz: np.ndarray, norm: 
             q[link] = base[link] + step_size * dz[3 * i : 3 * i + 3]
         phi = group_system(step.links, step.equations, q, {}, 1)[0]
         trial = float(np.linalg.norm(scaled_residual(phi, length, angles)))
-        if trial < norm or step_size < 1e-6:
-            return
+        if trial < norm:
+            return True
+        if step_size < 1e-6:
+            return False
         step_size /= 2
 
 
@@ -150,7 +156,7 @@ def _sequential(
 def _chunk_size(plan: SolvePlan, inputs: np.ndarray) -> int:
     """Poses per batched Newton chunk: about ``_CHUNK_SPAN`` of input at the typical step."""
     n = inputs.shape[0]
-    scale = _driver_scale(plan)
+    scale = plan.driver_scale
     steps = np.max(np.abs(np.diff(inputs, axis=0)) / scale, axis=1) if n > 1 else np.zeros(1)
     typical = float(np.median(steps)) if len(steps) else 0.0
     return int(np.clip(_CHUNK_SPAN / typical, 8, _CHUNK_MAX)) if typical > 0 else 8
@@ -162,7 +168,8 @@ def _predicted(
     """The poses ``idx`` extrapolated in the input from the solutions before ``k``.
 
     A quadratic through the last three solutions (k−3, k−2, k−1), by their
-    distances along the inputs; a line through two when only two are solved
+    distances along the inputs (a pose the path reaches by turning back at
+    k − 1 at a distance behind); a line through two when only two are solved
     (or the three are not distinct); the last solution with only one.
     """
     if k < 2:
@@ -172,7 +179,10 @@ def _predicted(
     back2 = 0.0
     if k >= 3:
         back2 = back1 - float(np.linalg.norm(inputs[k - 3] - inputs[k - 2]))
-    reach = np.linalg.norm(inputs[idx] - here, axis=1)
+    ahead = inputs[idx] - here
+    reach = np.linalg.norm(ahead, axis=1)
+    # a pose the path reaches by turning back lies behind: the same way as the last step
+    reach = np.where(ahead @ (here - inputs[k - 2]) < 0.0, -reach, reach)
     if back1 == 0.0:
         return {link: np.broadcast_to(out[link][k - 1], (len(idx), 3)).copy() for link in links}
     if k < 3 or back2 == back1:
@@ -265,27 +275,36 @@ def follow(step: GroupStep, plan: SolvePlan, q: dict, inputs: np.ndarray, start:
         q[link] = out[link]
 
 
-def _driver_scale(plan: SolvePlan) -> np.ndarray:
-    """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size."""
-    return np.array([1.0 if d.kind == "R" else plan.length for d in plan.drivers])
-
-
 def needs_continuation(plan: SolvePlan) -> bool:
     """Whether some step is solved by Newton (so far-apart inputs need intermediate poses)."""
     return any(step.group is None or step.group.kind is None for step in plan.steps)
 
 
-def densified(plan: SolvePlan, inputs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Inputs with intermediate rows from the sketch on, so Newton never jumps far.
+def densified(
+    plan: SolvePlan, inputs: np.ndarray, origin: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """Inputs with intermediate rows from the sketch (or ``origin``) on, so Newton never jumps far.
 
     Returns the rows and, for each row of ``inputs``, its index among them.
     """
-    scale = _driver_scale(plan)
-    previous = np.vstack([np.zeros((1, inputs.shape[1])), inputs[:-1]])
+    scale = plan.driver_scale
+    start = np.zeros((1, inputs.shape[1])) if origin is None else np.reshape(origin, (1, -1))
+    previous = np.vstack([start, inputs[:-1]])
     jump = np.max(np.abs(inputs - previous) / scale, axis=1) if len(scale) else np.zeros(0)
-    pieces = np.maximum(1, np.ceil(jump / CONTINUATION_STEP)).astype(int)
-    if not len(pieces) or int(pieces.max()) == 1:  # no step is too long: the rows as they are
+    pieces = np.ceil(jump / CONTINUATION_STEP)
+    if not len(pieces) or float(pieces.max()) <= 1.0:  # no step too long: the rows as they are
         return inputs, np.arange(len(inputs))
+    rows = int(min(float(np.sum(np.maximum(pieces, 1.0))), 2.0**62))
+    check_poses(
+        plan,
+        rows,
+        rates=False,
+        what=f"following these inputs from the sketch through {rows} intermediate poses (one "
+        f"every {CONTINUATION_STEP:g} rad, or {CONTINUATION_STEP:g} of the sketch's size for a "
+        "sliding driver)",
+        advice="give inputs nearer the sketch and to each other",
+    )
+    pieces = np.maximum(1, pieces).astype(int)
     picks = np.cumsum(pieces) - 1
     # row i's pieces: previous_i + (input_i − previous_i)·k/pieces_i, k = 1 … pieces_i
     owner = np.repeat(np.arange(len(inputs)), pieces)

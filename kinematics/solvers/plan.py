@@ -15,8 +15,10 @@ its links and the equations of its pairs. Nothing is solved here.
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
 import numpy as np
@@ -28,10 +30,20 @@ from structure.model import Mechanism, PairKind
 from structure.report import StructuralReport
 
 from ..cams.contact import CamContact, cam_contacts
+from ..errors import AssemblyModeError
 from .equations import Equation, slide_equations
 from .planar import unit_from_degrees
 
-__all__ = ["DriverStep", "GroupStep", "SolvePlan", "make_plan"]
+__all__ = [
+    "DriverStep",
+    "GroupStep",
+    "SolvePlan",
+    "in_unit",
+    "make_plan",
+    "parse_flip",
+    "single_mode_kinds",
+    "working_unit",
+]
 
 
 @dataclass(frozen=True)
@@ -88,8 +100,15 @@ class SolvePlan:
     ``points`` maps a point name to the link that carries it and its sketch
     coordinates; ``length`` is the sketch's size (for tolerances); ``flip``
     holds the labels of the dyads to assemble in the other mode than the
-    sketch's; ``higher_pairs`` the higher pairs replaced by virtual links,
-    whose replacement holds at the sketch pose only.
+    sketch's, ``modes`` the other groups' assembly modes asked for
+    (:mod:`kinematics.solvers.modes`: ``{label: mode}``, mode 1 the next one
+    from the sketch's) and ``starts`` their links' poses at the sketch's inputs,
+    once found (:func:`kinematics.solvers.solve.solve_poses` finds them);
+    ``higher_pairs`` the higher pairs replaced by virtual links,
+    whose replacement holds at the sketch pose only. ``unit`` is the length,
+    in metres, that one unit of the plan's coordinates stands for (1: the
+    file's metres; see :func:`in_unit`); a sliding driver's inputs, speed and
+    acceleration stay in metres whatever it is.
     """
 
     mechanism: Mechanism
@@ -102,6 +121,11 @@ class SolvePlan:
     contacts: tuple[tuple[str, str, str, str | None], ...] = ()  # virtual, a, b, contact point
     rolling: tuple[GroupStep, ...] | None = None
     cams: tuple[CamContact, ...] = ()  # the cams with a profile: their replacement is per pose
+    unit: float = 1.0
+    modes: Mapping[str, int] = field(default_factory=lambda: MappingProxyType({}))
+    starts: Mapping[str, Mapping[str, np.ndarray]] = field(
+        default_factory=lambda: MappingProxyType({})
+    )
 
     @property
     def driver_kinds(self) -> tuple[str, ...]:
@@ -110,8 +134,12 @@ class SolvePlan:
 
     @property
     def driver_scale(self) -> np.ndarray:
-        """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size."""
-        return np.array([1.0 if d.kind == "R" else self.length for d in self.drivers])
+        """Per driver, what one unit of input is measured against: 1 rad, or the sketch's size.
+
+        The sketch's size in metres, as a sliding driver's inputs are.
+        """
+        size = self.length * self.unit
+        return np.array([1.0 if d.kind == "R" else size for d in self.drivers])
 
 
 def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.ndarray:
@@ -129,15 +157,22 @@ def _xy(mechanism: Mechanism, name: str | None, why: str, problems: list) -> np.
 def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     """The solve plan of a structural report whose mechanism has sketch coordinates.
 
-    ``flip`` names dyads (by label, e.g. ``'II(2,3)'``) to assemble in the
-    other mode than the sketch's.
+    ``flip`` names groups (by label) to assemble in another mode than the
+    sketch's: ``'II(2,3)'`` a dyad in its other one, ``'III(4,5,6,7)'`` a
+    triad or any other group in the next one found from the sketch's,
+    ``'III(4,5,6,7)=2'`` in mode 2 as
+    :func:`~kinematics.solvers.solve.assembly_modes` lists them. The modes of
+    the groups other than dyads are found when the plan is first solved.
 
     Raises
     ------
     EdgeListError
         A pair point without coordinates, or a P pair without ``angle=``.
+    AssemblyModeError
+        ``flip`` asks a dyad for a mode it does not have (a PRP or RPP dyad has
+        only one; any other dyad two).
     ValueError
-        ``flip`` names a group that is not a dyad of the plan.
+        ``flip`` names a group that is not a group of the plan, or cannot be read.
     """
     m = report.replaced
     problems: list[EdgeListProblem] = []
@@ -153,7 +188,7 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
     ]
     if problems:
         raise EdgeListError(m.source, problems)
-    _check_flip(steps, flip)
+    dyads, modes = _check_flip(steps, flip)
     profiled = {c.virtual for c in cams}
     return SolvePlan(
         m,
@@ -161,11 +196,12 @@ def make_plan(report: StructuralReport, flip: Iterable[str] = ()) -> SolvePlan:
         tuple(steps),
         MappingProxyType(_cam_points(_points(m), cams)),
         _sketch_size(m),
-        frozenset(flip),
+        dyads,
         tuple(r.pair.label for r in report.replacements if r.virtual_link not in profiled),
         _contacts(report),
         _rolling_steps(report, steps, profiled) if report.replacements else None,
         cams,
+        modes=MappingProxyType(modes),
     )
 
 
@@ -281,13 +317,75 @@ def _sketch_size(m: Mechanism) -> float:
     return span if span > 0 else 1.0
 
 
-def _check_flip(steps: list[GroupStep], flip: Iterable[str]) -> None:
-    dyads = {s.label for s in steps if s.group is not None and s.group.kind is not None}
-    unknown = set(flip) - dyads
+#: dyads whose pairs place them in one way only (a linear system)
+single_mode_kinds = frozenset({"PRP", "RPP"})
+
+
+def parse_flip(flip: Iterable[str]) -> dict[str, int]:
+    """``{group label: mode}`` from ``flip``: ``'II(2,3)'`` (mode 1) or ``'III(4,5,6,7)=2'``.
+
+    >>> parse_flip(["II(2,3)", "III(4,5,6,7)=2"])
+    {'II(2,3)': 1, 'III(4,5,6,7)': 2}
+
+    Raises
+    ------
+    ValueError
+        A mode that is not a whole number from 1 on, or a group named twice
+        with different modes.
+    """
+    out: dict[str, int] = {}
+    for text in flip:
+        label, sep, number = str(text).partition("=")
+        label = label.strip()
+        mode = 1
+        if sep:
+            try:
+                mode = int(number.strip())
+            except ValueError:
+                mode = 0
+            if mode < 1:
+                raise ValueError(
+                    f"cannot read {text!r}: after '=' comes the number of an assembly mode, "
+                    "1 or more (mode 0 is the sketch's, which needs no --flip), as "
+                    "--modes lists them"
+                )
+        if out.get(label, mode) != mode:
+            raise ValueError(f"group {label} is given two assembly modes, {out[label]} and {mode}")
+        out[label] = mode
+    return out
+
+
+def _check_flip(
+    steps: list[GroupStep], flip: Iterable[str]
+) -> tuple[frozenset[str], dict[str, int]]:
+    """The dyads to flip, and the other groups' modes, that ``flip`` asks for."""
+    asked = parse_flip(flip)
+    groups = {s.label: s for s in steps if s.group is not None}
+    unknown = sorted(set(asked) - set(groups))
     if unknown:
         raise ValueError(
-            f"cannot flip {', '.join(sorted(unknown))}: the dyads are {', '.join(sorted(dyads))}"
+            f"cannot flip {', '.join(unknown)}: the groups are "
+            f"{', '.join(groups) or 'none (the mechanism has no Assur group)'}"
         )
+    dyads, modes = set(), {}
+    for label, mode in asked.items():
+        kind = groups[label].group.kind  # type: ignore[union-attr]
+        if kind in single_mode_kinds:
+            raise AssemblyModeError(
+                f"group {label}, a dyad ({kind}), has a single assembly mode: its two slides "
+                "and its pin place it in one way only, so there is no other to choose (leave "
+                "it out of --flip)"
+            )
+        if kind is not None and mode != 1:
+            raise AssemblyModeError(
+                f"group {label}, a dyad ({kind}), has two assembly modes, 0 (the sketch's) "
+                f"and 1 (the other), so there is no mode {mode} (write --flip '{label}')"
+            )
+        if kind is not None:
+            dyads.add(label)
+        else:
+            modes[label] = mode
+    return frozenset(dyads), modes
 
 
 def _contacts(report: StructuralReport) -> tuple[tuple[str, str, str, str | None], ...]:
@@ -339,3 +437,80 @@ def _rolling_steps(
                       unknowns)
         )  # fmt: skip
     return tuple(out)
+
+
+#: the sketch sizes (m) a plan is solved at as it stands: from 2⁻⁶⁴ to 2⁶⁴ the squares and
+#: products the solvers form (up to the eighth power of a length) stay normal floats
+_PLAIN_SIZES = (2.0**-64, 2.0**64)
+
+
+def working_unit(plan: SolvePlan) -> float:
+    """The unit of length (m) to solve ``plan`` in: 1, or a power of two near its size.
+
+    A sketch between 2⁻⁶⁴ and 2⁶⁴ m is solved as it stands; a smaller or
+    larger one in the power of two nearest its size, so that no square of a
+    length under- or overflows. Scaling by a power of two is exact, so the
+    answers are the same numbers either way.
+
+    >>> from structure import analyze, parse_edgelist
+    >>> tiny = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D",
+    ...                        "point A 0 0", "point B 0 1e-300", "point C 3e-300 1e-300",
+    ...                        "point D 3e-300 0"])
+    >>> working_unit(make_plan(analyze(tiny))) == 2.0**-995   # 3e-300 m = 1.0045·2⁻⁹⁹⁵ m
+    True
+    """
+    size = plan.length * plan.unit
+    low, high = _PLAIN_SIZES
+    if low <= size <= high or plan.cams:  # a designed cam's program is in metres
+        return 1.0
+    return math.ldexp(1.0, math.frexp(size)[1] - 1)
+
+
+def in_unit(plan: SolvePlan, unit: float) -> SolvePlan:
+    """The plan with its coordinates measured in ``unit`` metres (a power of two: exact).
+
+    The drivers' pivots, the pairs' points, the named points and the sketch's
+    size are divided by ``unit``; the sliding drivers' inputs, speeds and
+    accelerations stay in metres (``plan.unit`` converts them). A plan in a
+    unit already is measured in the new one.
+    """
+    ratio = unit / plan.unit
+    if ratio == 1.0:
+        return plan
+    m = plan.mechanism
+    points = {
+        name: dataclasses.replace(p, x=p.x / ratio, y=p.y / ratio, exact=(None, None))
+        for name, p in m.points.items()
+    }
+    mechanism = dataclasses.replace(m, points=points)
+    per = np.array([ratio, ratio, 1.0])
+    drivers = tuple(dataclasses.replace(d, pivot=d.pivot / ratio) for d in plan.drivers)
+    return dataclasses.replace(
+        plan,
+        mechanism=mechanism,
+        drivers=drivers,
+        steps=_steps_in(plan.steps, ratio),
+        points=MappingProxyType({k: (link, c / ratio) for k, (link, c) in plan.points.items()}),
+        length=plan.length / ratio,
+        rolling=None if plan.rolling is None else _steps_in(plan.rolling, ratio),
+        unit=unit,
+        starts=MappingProxyType(
+            {
+                label: {link: np.asarray(p, dtype=float) / per for link, p in poses.items()}
+                for label, poses in plan.starts.items()
+            }
+        ),
+    )
+
+
+def _steps_in(steps: tuple[GroupStep, ...], ratio: float) -> tuple[GroupStep, ...]:
+    """The steps with their equations' points divided by ``ratio`` (normals are unit vectors)."""
+    return tuple(
+        dataclasses.replace(
+            step,
+            equations=tuple(
+                dataclasses.replace(eq, point=eq.point / ratio) for eq in step.equations
+            ),
+        )
+        for step in steps
+    )

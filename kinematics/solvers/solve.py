@@ -40,11 +40,18 @@ import numpy as np
 from structure.errors import MechanismError
 
 from ..cams.contact import solve_cam_step
-from ..errors import DEAD_CENTRE, AssemblyError, SingularPoseError
+from ..errors import (
+    DEAD_CENTRE,
+    AssemblyError,
+    AssemblyModeError,
+    BranchChangeError,
+    SingularPoseError,
+)
 from ..results.state import KinematicState, LinkState, Motion, PointState
 from . import branches, dyads, triads
-from .equations import group_system
+from .equations import equation_point, group_system
 from .frames import Frame, LinkTable
+from .modes import STARTS, Mode, group_solutions
 from .newton import (
     CONTINUATION_STEP,
     angle_rows,
@@ -53,7 +60,8 @@ from .newton import (
     needs_continuation,
     scaled_jacobian,
 )
-from .plan import GroupStep, SolvePlan
+from .paths import Watch
+from .plan import GroupStep, SolvePlan, in_unit, single_mode_kinds, working_unit
 
 # the errors and the state types are defined in kinematics.errors and kinematics.results.state;
 # they stay importable from here
@@ -64,6 +72,7 @@ __all__ = [
     "Motion",
     "PointState",
     "SingularPoseError",
+    "assembly_modes",
     "solve_pose",
     "solve_poses",
 ]
@@ -81,8 +90,8 @@ def _place_drivers(
                 d.pivot.copy(), px, py, 0.0, 0.0, 0.0, 0.0,
                 np.cos(value), np.sin(value), float(d.speed), float(d.acceleration), value,
             )  # fmt: skip
-        else:
-            ux, uy = float(d.direction[0]), float(d.direction[1])
+        else:  # the input, speed and acceleration in metres, the frame in the plan's unit
+            ux, uy = float(d.direction[0]) / plan.unit, float(d.direction[1]) / plan.unit
             v, a = float(d.speed), float(d.acceleration)
             frames[d.link] = Frame(
                 np.zeros(2), value * ux, value * uy, v * ux, v * uy, a * ux, a * uy,
@@ -132,6 +141,11 @@ def solve_poses(
     inputs = np.atleast_2d(np.asarray(inputs, dtype=float))
     if inputs.shape[1] != len(plan.drivers):
         inputs = inputs.reshape(-1, len(plan.drivers))
+    unit = working_unit(plan)
+    if unit != plan.unit:
+        return _solved_in(in_unit(plan, unit), inputs, guess, rates)
+    if len(plan.modes) > len(plan.starts):
+        plan = _with_starts(plan)
     if plan.higher_pairs and np.any(inputs != 0):
         if plan.rolling is None:
             raise MechanismError(
@@ -144,59 +158,330 @@ def solve_poses(
             )
         # gear meshes roll: their virtual links give way to the rolling constraints
         plan = dataclasses.replace(plan, steps=plan.rolling, higher_pairs=())
-    if guess is None and needs_continuation(plan):
-        dense, picks = densified(plan, inputs)
-        if len(dense) > len(inputs):
-            motion = _checked(plan, dense, None, rates)
-            return Motion(
-                inputs,
-                MappingProxyType({k: v[picks] for k, v in motion.q.items()}),
-                MappingProxyType({k: v[picks] for k, v in motion.qd.items()}),
-                MappingProxyType({k: v[picks] for k, v in motion.qdd.items()}),
+    return _through(plan, inputs, guess, rates, None)
+
+
+def _with_starts(plan: SolvePlan) -> SolvePlan:
+    """The plan with the poses of the assembly modes its groups are asked for, at the sketch.
+
+    Group by group in solve order, the plan up to the group is solved at the
+    sketch's inputs (the groups before it in the modes asked for), and the
+    group's solutions there found (:func:`~kinematics.solvers.modes.group_solutions`).
+
+    Raises
+    ------
+    AssemblyModeError
+        A group has fewer modes than the one asked for.
+    """
+    starts: dict[str, Mapping[str, np.ndarray]] = dict(plan.starts)
+    for i, step in enumerate(plan.steps):
+        mode = plan.modes.get(step.label)
+        if mode is None or step.label in starts:
+            continue
+        found = _solutions_at_sketch(plan, i, starts)
+        if mode >= len(found):
+            raise AssemblyModeError(_too_few(step.label, len(found), mode))
+        starts[step.label] = found[mode]
+    return dataclasses.replace(plan, starts=MappingProxyType(starts))
+
+
+def _solutions_at_sketch(plan: SolvePlan, i: int, starts: Mapping) -> list[dict[str, np.ndarray]]:
+    """The solutions of step ``i`` at the sketch's inputs, the steps before it in their modes."""
+    step = plan.steps[i]
+    part = dataclasses.replace(
+        plan, steps=plan.steps[: i + 1], modes=MappingProxyType({}), starts=MappingProxyType(starts)
+    )
+    motion = _solve_poses(part, np.zeros((1, len(plan.drivers))), None, False)
+    touched = {link for eq in step.equations for link in (eq.a, eq.b, eq.carrier) if link}
+    known = {
+        link: np.asarray(motion.q[link][0], dtype=float)
+        for link in touched - set(step.links)
+        if link in motion.q
+    }
+    first = {link: np.asarray(motion.q[link][0], dtype=float) for link in step.links}
+    return group_solutions(step, part, known, first)
+
+
+def _too_few(label: str, count: int, mode: int) -> str:
+    """The message for a mode a group does not have."""
+    if count == 1:
+        return (
+            f"group {label} has a single assembly mode at the sketch's inputs (its closure "
+            f"equations have one solution there, found from {STARTS} starts of Newton's "
+            "method), so there is no other to choose: leave it out of --flip"
+        )
+    return (
+        f"group {label} has {count} assembly modes at the sketch's inputs, 0 to {count - 1} "
+        f"(see --modes), so there is no mode {mode}"
+    )
+
+
+def assembly_modes(plan: SolvePlan) -> dict[str, tuple[Mode, ...]]:
+    """Every group's assembly modes at the sketch's inputs, the groups before it as planned.
+
+    A dyad has two (0, the sketch's, and 1), a PRP or RPP dyad one; the other
+    groups' are found by :func:`~kinematics.solvers.modes.group_solutions`.
+    Mode 0 is the one the solve takes by itself; ``make_plan(report,
+    flip=[f"{label}={k}"])`` asks for mode k.
+    """
+    unit = working_unit(plan)
+    if unit != plan.unit:  # found in a unit near the sketch's size, given back in metres
+        found = assembly_modes(in_unit(plan, unit))
+        per = np.array([unit, unit, 1.0])
+        return {
+            label: tuple(
+                Mode(
+                    m.index,
+                    MappingProxyType({k: v * per for k, v in m.poses.items()}),
+                    MappingProxyType({k: v * unit for k, v in m.pins.items()}),
+                )
+                for m in modes
             )
-    return _checked(plan, inputs, guess, rates)
+            for label, modes in found.items()
+        }
+    plan = _with_starts(plan) if len(plan.modes) > len(plan.starts) else plan
+    out: dict[str, tuple[Mode, ...]] = {}
+    for i, step in enumerate(plan.steps):
+        if step.group is None:
+            continue
+        if step.kind is None:
+            found = _solutions_at_sketch(plan, i, plan.starts)
+        else:
+            base = dataclasses.replace(plan, flip=plan.flip - {step.label})
+            ways = [base]
+            if step.kind not in single_mode_kinds:
+                ways.append(dataclasses.replace(base, flip=base.flip | {step.label}))
+            found = []
+            for way in ways:
+                part = dataclasses.replace(way, steps=way.steps[: i + 1])
+                motion = _solve_poses(part, np.zeros((1, len(plan.drivers))), None, False)
+                found.append({link: np.asarray(motion.q[link][0]) for link in step.links})
+        out[step.label] = tuple(
+            Mode(k, MappingProxyType(poses), MappingProxyType(_named_pins(plan, step, poses)))
+            for k, poses in enumerate(found)
+        )
+    return out
+
+
+def _named_pins(plan: SolvePlan, step: GroupStep, poses: Mapping[str, np.ndarray]) -> dict:
+    """The named points of a group's pairs, where the links' ``poses`` put them (m)."""
+    out = {}
+    for eq in step.equations:
+        name = equation_point(plan.mechanism, eq) if eq.kind in ("HINGE", "SLIDE") else None
+        link = eq.a if eq.a in poses else eq.b
+        if name is None or link not in poses:
+            continue
+        x, y, theta = (float(v) for v in poses[link])
+        c, s = np.cos(theta), np.sin(theta)
+        px, py = float(eq.point[0]), float(eq.point[1])
+        out[name] = np.array([x + c * px - s * py, y + s * px + c * py])
+    return out
+
+
+def _followed(
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    rates: bool,
+    origin: np.ndarray | None,
+) -> Motion:
+    """:func:`_checked`, Newton's groups followed through intermediate poses from ``origin``.
+
+    ``origin`` is where the path starts (the sketch when None, else a pose
+    whose links' poses ``guess`` holds); without an origin, a guess starts
+    Newton at the first row with no intermediate poses.
+    """
+    if needs_continuation(plan) and (guess is None or origin is not None):
+        dense, picks = densified(plan, inputs, origin)
+        if len(dense) > len(inputs):
+            return _picked(_checked(plan, dense, guess, rates, origin), inputs, picks)
+    return _checked(plan, inputs, guess, rates, origin)
+
+
+def _picked(motion: Motion, inputs: np.ndarray, picks: np.ndarray) -> Motion:
+    """The motion at the rows ``picks`` only (the ``inputs``), as plain arrays."""
+    return Motion(
+        inputs,
+        MappingProxyType({k: v[picks] for k, v in motion.q.items()}),
+        MappingProxyType({k: v[picks] for k, v in motion.qd.items()}),
+        MappingProxyType({k: v[picks] for k, v in motion.qdd.items()}),
+    )
+
+
+def _through(
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    rates: bool,
+    origin: np.ndarray | None,
+) -> Motion:
+    """:func:`_followed`, on through a change point where the rest of the mechanism decides.
+
+    At a change point of a closed-form dyad the linkage may go on in either
+    assembly mode, unless the rest of it allows one only (a parallelogram
+    with a third parallel crank: the crank holds it a parallelogram). Each
+    mode is tried a little way past the change point; when exactly one
+    solves, the inputs after the change point are solved in it, from there
+    on (and so on at the next one). Otherwise the change point stops the solve.
+    """
+    try:
+        return _followed(plan, inputs, guess, rates, origin)
+    except BranchChangeError as exc:
+        dyads.layout_discarded()
+        split = _first_split(plan, inputs, guess, origin, exc)
+        if split is None:
+            raise
+        k, point, ahead = split
+        before = _followed(plan, inputs[:k], guess, rates, origin) if k else None
+        start = _last_poses(before) if before is not None else guess
+        options = branches.either_mode(plan, exc.group)
+        modes = [option for option in options if _goes_on(option, ahead, start, point)]
+        if len(modes) != 1:
+            raise
+        after = _through(modes[0], inputs[k:], start, rates, point)
+        return _joined(inputs, before, after)
+
+
+def _first_split(
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    origin: np.ndarray | None,
+    error: BranchChangeError,
+):
+    """:func:`~kinematics.solvers.branches.split_at` at the first change point along the path.
+
+    The error names a change point, not always the first one the path meets
+    (a long step may pass several); the way up to just short of it is solved
+    again, positions only, until no change point comes before.
+    """
+    for _ in range(64):
+        split = branches.split_at(plan, inputs, origin, error)
+        if split is None:
+            return None
+        k, point, _ = split
+        before = inputs[k - 1] if k else (np.zeros_like(point) if origin is None else origin)
+        short = point + CONTINUATION_STEP * 1e-3 * (before - point) / max(
+            float(np.max(np.abs(before - point) / plan.driver_scale)), 1e-300
+        )
+        try:
+            _followed(plan, np.vstack([inputs[:k], short[None, :]]), guess, False, origin)
+        except BranchChangeError as earlier:
+            error = earlier
+            continue
+        return split
+    return None
+
+
+def _goes_on(plan: SolvePlan, ahead: np.ndarray, start, origin: np.ndarray) -> bool:
+    """Whether ``plan`` solves the poses ``ahead`` (just past a change point at ``origin``)."""
+    try:
+        _followed(plan, ahead, start, False, origin)
+    except (AssemblyError, SingularPoseError):
+        return False
+    return True
+
+
+def _last_poses(motion: Motion) -> dict[str, np.ndarray]:
+    """Every link's pose at the motion's last row (where to start Newton beyond it)."""
+    return {link: np.array(q[-1], dtype=float) for link, q in motion.q.items()}
+
+
+def _joined(inputs: np.ndarray, before: Motion | None, after: Motion) -> Motion:
+    """The motions of two stretches of ``inputs`` (the first may be None), one after the other."""
+    if before is None:
+        return Motion(inputs, after.q, after.qd, after.qdd)
+
+    def joined(a: Mapping[str, np.ndarray], b: Mapping[str, np.ndarray]) -> MappingProxyType:
+        return MappingProxyType({k: np.concatenate([a[k], b[k]]) for k in b if k in a})
+
+    return Motion(
+        inputs, *(joined(getattr(before, k), getattr(after, k)) for k in ("q", "qd", "qdd"))
+    )
+
+
+def _solved_in(
+    plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None, rates: bool
+) -> Motion:
+    """:func:`solve_poses` of a plan measured in a unit of its own, the motion back in metres.
+
+    The links' displacements and their rates are multiplied by ``plan.unit``
+    (a power of two: exact); angles, ω and ε are the same in any unit. The
+    inputs are a copy, so that the solve writes nothing into a sweep's layout
+    (which wants metres).
+    """
+    unit = plan.unit
+    if guess is not None:
+        per = np.array([unit, unit, 1.0])
+        guess = {link: np.asarray(value, dtype=float) / per for link, value in guess.items()}
+    motion = solve_poses(plan, inputs.copy(), guess, rates=rates)
+
+    def metres(table: Mapping[str, np.ndarray]) -> MappingProxyType:
+        out = {}
+        for link, value in table.items():
+            value = np.array(value, dtype=float)
+            value[:, :2] *= unit
+            out[link] = value
+        return MappingProxyType(out)
+
+    return Motion(inputs, metres(motion.q), metres(motion.qd), metres(motion.qdd))
 
 
 def _checked(
-    plan: SolvePlan, inputs: np.ndarray, guess: Mapping[str, np.ndarray] | None, rates: bool
+    plan: SolvePlan,
+    inputs: np.ndarray,
+    guess: Mapping[str, np.ndarray] | None,
+    rates: bool,
+    origin: np.ndarray | None = None,
 ) -> Motion:
     """:func:`_solve_poses` over a path of inputs, with no silent change of assembly mode.
 
     The steps the closed-form dyads watch are looked into with finer steps
     (:func:`kinematics.solvers.branches.confirm_branches`); a path with steps coarser
     than the continuation step is first checked on intermediate poses, positions
-    only. A single pose keeps the sketch's mode without a path to check.
+    only, from its origin on (the sketch, when None; else a change point, which
+    is not solved itself). A path from the sketch that starts away from it is
+    looked into from the sketch to its first row too. A single pose keeps the
+    sketch's mode without a path to check.
     """
-    positions = _positions_of(plan)
-    watch: list = []
+    positions = _positions_of(plan, guess if origin is not None else None)
+    watch: list = Watch()
     motion = _precise_errors(
         plan, inputs, lambda found: _solve_poses(plan, inputs, guess, rates, found), watch
     )
-    if len(inputs) < 2:
+    if len(inputs) < 2 and origin is None:
         return motion
+    start = np.zeros(inputs.shape[1]) if origin is None else origin
     path = inputs
-    if _largest_step(plan, inputs) > CONTINUATION_STEP and len(
-        dense := densified(plan, inputs)[0]
+    if _largest_step(plan, inputs, start) > CONTINUATION_STEP and len(
+        dense := densified(plan, inputs, origin)[0]
     ) > len(inputs):
-        path, watch = dense, []
+        path, watch = dense, Watch()
         _precise_errors(plan, dense, lambda found: positions(dense, found), watch)
     if watch:
         branches.confirm_branches(plan, path, watch, positions)
+    if origin is None and np.any(path[0] != 0.0):  # the step from the sketch, looked into too
+        head = np.vstack([np.zeros((1, path.shape[1])), path[:2]])
+        watch = Watch()
+        _precise_errors(plan, head, lambda found: positions(head, found), watch)
+        if watch:
+            branches.confirm_branches(plan, head, watch, positions)
     return motion
 
 
-def _largest_step(plan: SolvePlan, inputs: np.ndarray) -> float:
-    """The largest step between rows (and from the sketch to the first), in units of scale."""
+def _largest_step(plan: SolvePlan, inputs: np.ndarray, start: np.ndarray) -> float:
+    """The largest step between rows (and from ``start`` to the first), in units of scale."""
     scale = plan.driver_scale
-    first = float(np.max(np.abs(inputs[0]) / scale))
+    first = float(np.max(np.abs(inputs[0] - start) / scale))
     steps = np.abs(np.diff(inputs, axis=0))
     return max(first, float(np.max(steps / scale)) if steps.size else 0.0)
 
 
-def _positions_of(plan: SolvePlan):
+def _positions_of(plan: SolvePlan, guess: Mapping[str, np.ndarray] | None = None):
     """``solve(rows, watch, groups)``: the plan's positions at ``rows``, watched steps to ``watch``.
 
-    With ``groups`` (labels), only the steps up to the last of them are solved.
+    With ``groups`` (labels), only the steps up to the last of them are solved;
+    ``guess`` starts Newton at the first row.
     """
 
     def positions(rows: np.ndarray, watch: list | None, groups=None) -> Motion:
@@ -204,7 +489,7 @@ def _positions_of(plan: SolvePlan):
         if groups:
             last = max(i for i, step in enumerate(plan.steps) if step.label in groups)
             part = dataclasses.replace(plan, steps=plan.steps[: last + 1])
-        return _solve_poses(part, rows, None, False, watch)
+        return _solve_poses(part, rows, guess, False, watch)
 
     return positions
 
@@ -257,7 +542,8 @@ def _solve_poses(
         # looked up on the module at call time, so a test can switch a closed form off
         if dyads.frame_dyad(step, plan, frames, tables, pins, inputs, rates, watch):
             continue
-        if not (guess and any(link in guess for link in step.links)):
+        mode = plan.starts.get(step.label, {})
+        if not mode and not (guess and any(link in guess for link in step.links)):
             suspect = triads.frame_triad(step, plan, frames, tables, pins, inputs, rates)
             if suspect is not None:
                 if suspect.any():
@@ -265,7 +551,10 @@ def _solve_poses(
                 continue
         if not dyads.place_dyad(step, plan, q, inputs):
             start = {
-                link: np.array(guess[link], dtype=float) if guess and link in guess else np.zeros(3)
+                link: np.array(
+                    guess[link] if guess and link in guess else mode.get(link, np.zeros(3)),
+                    dtype=float,
+                )
                 for link in step.links
             }
             follow(step, plan, q, inputs, start)

@@ -19,7 +19,6 @@ from __future__ import annotations
 import csv
 import io
 import math
-import os
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import partial
@@ -28,13 +27,14 @@ import numpy as np
 
 from structure.errors import EdgeListError, EdgeListProblem
 
-from ..errors import SweepSizeError
 from ..kinetostatics.forces import forces_over
 from ..results.state import Motion
 from .dyads import PointLayout, laid_out
+from .memory import BYTES_PER_POSE_ITEM, check_poses, memory_limit
 from .plan import SolvePlan
 from .planar import cross, norm, rotate_many, units
 from .solve import solve_poses
+from .travel import cycle_inputs
 
 __all__ = [
     "BYTES_PER_POSE_ITEM",
@@ -45,19 +45,6 @@ __all__ = [
     "sweep",
     "transmission_angle",
 ]
-
-
-#: bytes per pose a sweep's results and the solve's temporaries take, per named point and link
-#: (measured: 90–320 with rates; a third of it for positions only)
-BYTES_PER_POSE_ITEM = 320
-
-
-def memory_limit() -> int:
-    """The memory a sweep may take: half of this machine's (4 GiB where it cannot be read)."""
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
-    except (ValueError, OSError, AttributeError):  # pragma: no cover - platform
-        return 4 * 2**30
 
 
 class _LazyMapping(Mapping):
@@ -179,10 +166,22 @@ def transmission_angle(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> float:
     return math.acos(max(-1.0, min(1.0, cos)))
 
 
+def _directions(v: np.ndarray) -> np.ndarray:
+    """Each row of ``v`` (N, 2) divided by its length (no product of two lengths: any unit)."""
+    return v / norm(v)[:, None]
+
+
+def _between(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """The angle between the rows of ``u`` and ``v`` (N, 2), in [0, π], to rounding at any angle.
+
+    ``atan2(|u × v|, u · v)``: unlike the arccosine of the dot product, as
+    exact near 0° and 180° as near 90°.
+    """
+    return np.arctan2(np.abs(cross(u, v)), np.einsum("ij,ij->i", u, v))
+
+
 def _angles(b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
-    u, v = c - b, c - d
-    cos = np.einsum("ij,ij->i", u, v) / (norm(u) * norm(v))
-    return np.arccos(np.clip(cos, -1.0, 1.0))
+    return _between(_directions(c - b), _directions(c - d))
 
 
 def _rrr_pins(plan: SolvePlan) -> dict[str, tuple[str, str, str]]:
@@ -204,8 +203,11 @@ def sweep(
 ) -> Sweep:
     """Solve every pose of ``inputs`` (shape (poses,) or (poses, drivers)).
 
-    By default each rotating driver makes one turn from the sketch in
-    ``steps`` equal steps (a sliding driver stays at the sketch). With
+    By default the drivers go through one cycle from the sketch in ``steps``
+    equal steps (:func:`~kinematics.solvers.travel.cycle_inputs`): a turning
+    driver one turn (several drivers at the ratio of the speeds the file
+    gives them, each a whole number of turns), a sliding driver alone its
+    stroke, from one dead point to the other (a little short of each). With
     ``rates`` false only the positions are solved (points' ``position``, links'
     ``angle``); a dyad's joint is then the closed form's own value, which the
     full sweep's (carried through a link's frame, as it always was) matches to
@@ -215,14 +217,15 @@ def sweep(
     ------
     SweepSizeError
         The poses would take more memory than a sweep may (:func:`memory_limit`).
+    TravelError
+        A sliding driver that cannot move from the sketch (no stroke to sweep).
     AssemblyError, SingularPoseError
         At the first pose that cannot be solved, naming it (a branch change
         is a :class:`~kinematics.errors.BranchChangeError`).
     """
     if inputs is None:
         _check_size(plan, steps, rates)
-        turn = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
-        inputs = np.column_stack([turn if d.kind == "R" else np.zeros(steps) for d in plan.drivers])
+        inputs = cycle_inputs(plan, steps)
     inputs = np.asarray(inputs, dtype=float)
     if inputs.ndim == 1:
         inputs = inputs[:, None]
@@ -246,16 +249,7 @@ def sweep(
 
 def _check_size(plan: SolvePlan, poses: int, rates: bool) -> None:
     """Refuse a sweep whose results would not fit in the memory a sweep may take."""
-    items = len(plan.points) + len(plan.mechanism.moving_links)
-    per_pose = BYTES_PER_POSE_ITEM * max(items, 1) // (1 if rates else 3)
-    limit = memory_limit()
-    if poses * per_pose > limit:
-        raise SweepSizeError(
-            f"a sweep of {poses} poses would take about {poses * per_pose / 1e9:.3g} GB of "
-            f"memory, more than the {limit / 1e9:.3g} GB a sweep may take (half of this "
-            f"machine's): ask for at most {limit // per_pose} poses (steps=, --steps on the "
-            "command line), or sweep the inputs in parts"
-        )
+    check_poses(plan, poses, rates)
 
 
 def _link_column(motion: Motion, link: str, key: str) -> np.ndarray:
@@ -391,9 +385,7 @@ def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.nda
             if u is None or len(pins) != 2 or not all(x in points for x in pins):
                 continue
             line = points[pins[1]]["position"] - points[pins[0]]["position"]
-            length = np.sqrt(np.einsum("ij,ij->i", line, line))
-            along = np.abs(np.einsum("ij,ij->i", line, u)) / np.where(length > 0, length, 1.0)
-            out[g.label] = np.pi / 2 - np.arccos(np.clip(along, 0.0, 1.0))
+            out[g.label] = _off_square(line, u)  # 90° less the angle between line and slide
             continue
         slides = [p for p in (*ext, mid) if p.kind.value == "P"]
         if len(slides) != 2:
@@ -401,9 +393,22 @@ def _prismatic_transmission(plan: SolvePlan, motion, points) -> dict[str, np.nda
         dirs = [_slide_direction(plan, motion, p.pair, p.links[0]) for p in slides]
         if any(d is None for d in dirs):
             continue
-        sine = np.abs(cross(dirs[0], dirs[1]))
-        out[g.label] = np.arcsin(np.clip(sine, 0.0, 1.0))
+        out[g.label] = _off_square(dirs[0], _turned_left(dirs[1]))  # the angle between them
     return out
+
+
+def _turned_left(u: np.ndarray) -> np.ndarray:
+    """The rows of ``u`` (N, 2) turned by 90°."""
+    return np.column_stack([-u[:, 1], u[:, 0]])
+
+
+def _off_square(v: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """How far the rows of ``v`` lean from square to the unit rows ``u``: asin(|v̂·u|), in [0, π/2].
+
+    ``atan2(|v·u|, |v × u|)``: exact to rounding at any angle, and ``v`` may
+    have any length (it is not squared); 0 for ``v`` zero.
+    """
+    return np.arctan2(np.abs(np.einsum("ij,ij->i", v, u)), np.abs(cross(v, u)))
 
 
 def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
@@ -430,8 +435,7 @@ def _rrp_transmission(plan: SolvePlan, motion, points) -> dict[str, np.ndarray]:
         theta = motion.q[guide][:, 2] if guide in motion.q else np.zeros(len(motion.inputs))
         u = units(pair.angle + theta)
         rod = points[mid.point]["position"] - points[rod_pin[0].point]["position"]
-        along = np.abs(np.einsum("ij,ij->i", rod, u)) / norm(rod)
-        out[g.label] = np.arcsin(np.clip(along, 0.0, 1.0))
+        out[g.label] = _off_square(rod, u)
     return out
 
 

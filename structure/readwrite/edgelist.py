@@ -24,9 +24,10 @@ direction), ``span=S``, ``friction=F``; ``flat=L``, ``roller=L``,
 ``centers=O1,O2``, ``normal=DEG`` (H), and for a gear mesh the word ``gear``
 with ``z=ZA,ZB``, ``internal=L``, ``module=M``. Loads: ``force LINK POINT fx
 fy``, ``moment LINK M``, ``mass LINK m J S``, ``gravity gx gy``, ``balance
-LINK POINT angle=DEG``. The words ``name``, ``ground``, ``driver``, ``point``
-and the load words are reserved at the start of a line (unless the third
-word is a pair kind).
+LINK POINT angle=DEG``. A design target of the marker P (dimensional
+synthesis): ``target NAME x y [input=DEG] [angle=DEG]``. The words ``name``,
+``ground``, ``driver``, ``point``, ``target`` and the load words are reserved
+at the start of a line (unless the third word is a pair kind).
 
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> m.driver_links, len(m.pairs)
@@ -58,10 +59,12 @@ from ..model import (
     Mechanism,
     Pair,
     PointDef,
+    Target,
     make_driver,
     make_load,
     make_pair,
     make_point,
+    make_target,
 )
 from ..utils import paused_gc
 from ..validation import (
@@ -85,7 +88,7 @@ __all__ = [
 ]
 
 #: the words that start a statement other than a pair (``name`` starts a title)
-_STATEMENTS = frozenset(("ground", "driver", "point", *(k.value for k in LoadKind)))
+_STATEMENTS = frozenset(("ground", "driver", "point", "target", *(k.value for k in LoadKind)))
 _KIND_OF = {k.value: k for k in PairKind}
 
 
@@ -143,6 +146,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         found.name,
         source,
         tuple(found.loads),
+        tuple(found.targets),
     )
     return validated(mechanism, ground_line=found.ground_line)
 
@@ -158,6 +162,7 @@ class _Statements:
     drivers: list[Driver] = field(default_factory=list)
     points: dict[str, PointDef] = field(default_factory=dict)
     loads: list[Load] = field(default_factory=list)
+    targets: list[Target] = field(default_factory=list)
     problems: list[EdgeListProblem] = field(default_factory=list)
     #: each name of a link once: a link is named on ~3 lines of a large file, and its pairs
     #: share one string (a local table, freed after the read, unlike sys.intern's); the
@@ -173,6 +178,8 @@ class _Statements:
             self.drivers.append(_driver(tokens, line_no))
         elif head == "point":
             self._add_point(_point(tokens, line_no))
+        elif head == "target":
+            self._add_target(_target(tokens, line_no))
         else:
             self.loads.append(_load(tokens, line_no))
 
@@ -188,6 +195,12 @@ class _Statements:
             first = self.points[point.name].line_no
             raise StatementError(f"point {point.name} already given on line {first}")
         self.points[point.name] = point
+
+    def _add_target(self, target: Target) -> None:
+        first = next((t.line_no for t in self.targets if t.name == target.name), None)
+        if first is not None:
+            raise StatementError(f"target {target.name} already given on line {first}")
+        self.targets.append(target)
 
 
 # ----------------------------------------------------------------------------- pairs
@@ -447,6 +460,26 @@ def _point(tokens: list[str], line_no: int) -> PointDef:
         raise StatementError(_with_reason(refused.reason, unread)) from None
 
 
+def _target(tokens: list[str], line_no: int) -> Target:
+    """``target NAME x y [input=DEG] [angle=DEG]`` (a design target of the marker P)."""
+    usage = "expected 'target NAME x y [input=DEG] [angle=DEG]'"
+    if not 4 <= len(tokens) <= 6:
+        raise StatementError(usage)
+    options: dict[str, float] = {}
+    for tok in tokens[4:]:
+        key, eq, text = tok.partition("=")
+        if key not in ("input", "angle") or not eq or key in options:
+            raise StatementError(f"unexpected token {tok!r} ({usage})")
+        options[key] = _option_number(text)
+    try:
+        x, y = _number(tokens[2]), _number(tokens[3])
+    except ValueError:
+        x = y = math.nan  # make_target refuses it with its reason
+    return make_target(
+        tokens[1], x, y, options.get("input"), options.get("angle"), line_no=line_no
+    )
+
+
 def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
     """Read a mechanism from an edge-list file (UTF-8).
 
@@ -480,4 +513,5 @@ def write_edgelist(mechanism: Mechanism) -> str:
     out.extend(p.statement for p in mechanism.pairs)
     out.extend(p.statement for p in mechanism.points.values())
     out.extend(load.statement for load in mechanism.loads)
+    out.extend(t.statement for t in mechanism.targets)
     return "\n".join(out) + "\n"

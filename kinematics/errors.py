@@ -35,8 +35,10 @@ __all__ = [
     "AssemblyError",
     "BranchChangeError",
     "IndeterminateError",
+    "InfeasibleDesignError",
     "SingularPoseError",
     "SweepSizeError",
+    "SynthesisError",
     "inputs_text",
 ]
 
@@ -157,3 +159,20 @@ class IndeterminateError(MechanismError):
 
 class SweepSizeError(MechanismError):
     """A sweep asks for more poses than fit in the memory a sweep may take."""
+
+
+class SynthesisError(MechanismError):
+    """A synthesis problem that has no answer as posed: too few or too many targets, a
+    function undefined on its range, targets that fix no linkage (the message says which)."""
+
+
+class InfeasibleDesignError(SynthesisError):
+    """No candidate design met the constraints within the search budget.
+
+    ``rejections`` counts the candidates each constraint rejected (its name ->
+    count), so the message can say which one rejected most.
+    """
+
+    def __init__(self, message: str, rejections: dict[str, int] | None = None):
+        self.rejections = dict(rejections or {})
+        super().__init__(message)

@@ -196,7 +196,7 @@ def _dyads(poses: np.ndarray, size: float) -> list[Dyad]:
             if chord < 1e-9 * size:
                 continue
             mid, normal = (z1 + z2) / 2, np.array([-(z2 - z1)[1], (z2 - z1)[0]]) / chord
-            for k in (-1.0, 1.0):
+            for k in (-1.5, -0.6, 0.6, 1.5):
                 out.append(Dyad(mid + k * chord * normal, m))
         return out[:: max(1, len(out) // _MOST_DYADS)]
     if n == 3:
@@ -235,20 +235,22 @@ def _crank_inputs(poses: np.ndarray, crank: Dyad) -> np.ndarray | None:
     angles = np.arctan2(z[:, 1], z[:, 0])
     steps = np.diff(angles)
     ccw, cw = np.mod(steps, 2 * math.pi), -np.mod(-steps, 2 * math.pi)
-    for way in (ccw, cw):
+    for way in sorted((ccw, cw), key=lambda w: abs(w.sum())):  # the shorter way round first
         if abs(way.sum()) < 2 * math.pi - 1e-9:
             return np.concatenate([[0.0], np.cumsum(way)])
     return None
 
 
-def _quick(rows: np.ndarray, inputs: np.ndarray) -> tuple[list[Defects], np.ndarray]:
+def _quick(
+    rows: np.ndarray, inputs: np.ndarray, moving: np.ndarray
+) -> tuple[list[Defects], np.ndarray]:
     """The closed-form check of many pairings at once: circuit, branch; transmission ranges.
 
-    ``rows`` (K, parameters) and ``inputs`` (K, poses): the crank's rotations.
+    ``rows`` (K, parameters), ``inputs`` (K, poses): the crank's rotations,
+    ``moving`` (K, poses, 2, 2): the circle points B and C where the poses put them.
     """
-    phi = rows[:, 9:10] + inputs
-    at = linkage_poses(Linkage.FOURBAR, rows, phi)
-    b, c, d = at.points["B"], at.points["C"], at.points["D"]
+    b, c = moving[:, :, 0], moving[:, :, 1]
+    d = linkage_poses(Linkage.FOURBAR, rows, rows[:, 9:10] + inputs).points["D"]
     sides = np.sign((d - b)[..., 0] * (c - b)[..., 1] - (d - b)[..., 1] * (c - b)[..., 0])
     path = rows[:, 9:10] + inputs[:, -1:] * np.linspace(0.0, 1.0, 200)[None, :]
     along = linkage_poses(Linkage.FOURBAR, rows, path)
@@ -297,7 +299,7 @@ def synthesize_motion(poses: np.ndarray, *, check: int = 12) -> list[MotionDesig
         if np.linalg.norm(poses[i] - poses[j]) < 1e-12 * max(size, 1.0):
             raise SynthesisError(f"poses {i + 1} and {j + 1} are the same")
     dyads = _dyads(poses, size)
-    rows, inputs, unordered = [], [], 0
+    rows, inputs, moving, unordered = [], [], [], 0
     for crank, rocker in ((p, q) for p in dyads for q in dyads if p is not q):
         row = _design_row(poses, crank, rocker)
         if row is None or row[3:7].max() / row[3:7].min() > 20:
@@ -308,10 +310,11 @@ def synthesize_motion(poses: np.ndarray, *, check: int = 12) -> list[MotionDesig
             continue
         rows.append(row)
         inputs.append(turn)
+        moving.append(np.stack([_world(poses, crank.circle), _world(poses, rocker.circle)], 1))
     if not rows:
         why = " (the crank cannot pass the poses in order)" if unordered else ""
         raise SynthesisError(f"no pair of dyads makes a four-bar for these poses{why}")
-    found, spans = _quick(np.array(rows), np.array(inputs))
+    found, spans = _quick(np.array(rows), np.array(inputs), np.array(moving))
     rated = []
     for k, (defects, span) in enumerate(zip(found, spans, strict=True)):
         worst = min(span[0], 180.0 - span[1])

@@ -13,6 +13,7 @@ from structure.errors import MechanismError
 
 from .. import figures
 from ..figures.animation import animate, turn_inputs
+from ..figures.synthesis import structural_error_figure, target_figure
 from ..solvers.plan import make_plan
 from ..solvers.solve import solve_pose
 
@@ -29,8 +30,10 @@ __all__ = [
     "save_forces_sheet",
     "save_kinematics_sheet",
     "save_mechanism_drawing",
+    "save_structural_error",
     "save_structure_sheet",
     "save_sweep_figure",
+    "save_target_figure",
     "turn_inputs",
 ]
 
@@ -85,3 +88,13 @@ def save_forces_sheet(
 def save_sweep_figure(result: Sweep, plan: SolvePlan, path: str) -> None:
     """Paths, ω, ε, |v|, |a|, transmission angles and balancing over the sweep."""
     _save(path, lambda: figures.sweep_figure(result, plan))
+
+
+def save_target_figure(mechanism, path: str) -> None:
+    """A synthesised design: its targets over the path of its marker P."""
+    _save(path, lambda: target_figure(mechanism))
+
+
+def save_structural_error(design, path: str) -> None:
+    """A function generator's structural error over its range."""
+    _save(path, lambda: structural_error_figure(design))

@@ -42,6 +42,7 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "convert": ("convert", "run"),
     "atlas": ("atlas", "run"),
     "report": ("report", "run_report"),
+    "synthesize": ("synthesize", "run_synthesize"),
 }
 
 

@@ -157,9 +157,9 @@ def points_at(mechanism: Mechanism, inputs: np.ndarray, crank: bool) -> np.ndarr
         Where the solvers stop.
     """
     rows = np.mod(inputs, 2 * math.pi) if crank else np.asarray(inputs, dtype=float)
-    order = np.argsort(rows, kind="stable")
-    swept = np.concatenate([[0.0], rows[order]])  # from the sketch, whose mode it carries
+    # each input once, from the sketch (whose mode it carries): the sweep is given no
+    # repeated row (a repeated row at a dyad's low point sends its branch watch into
+    # ever finer copies of a step of length zero; see the report of this branch)
+    swept, where = np.unique(np.concatenate([[0.0], rows]), return_inverse=True)
     result = sweep(_plan(mechanism), swept, rates=False)
-    out = np.empty((len(rows), 2))
-    out[order] = result.points["P"]["position"][1:]
-    return out
+    return result.points["P"]["position"][where[1:]]

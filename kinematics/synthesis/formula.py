@@ -2,7 +2,7 @@
 
 The text is parsed by Python's :mod:`ast` (parsing only: nothing is run) and
 every node is checked against a short list: numbers, the variable ``x``, the
-constants ``pi`` and ``e``, ``+ - * / **`` (``^`` read as a power), and the
+constants ``pi`` and ``e``, ``+ - * / **`` (``^`` is ``**``), and the
 functions of :data:`FUNCTIONS`. The tree is then evaluated by walking it with
 numpy, never with ``eval``. A function undefined somewhere on its range is
 a :class:`~kinematics.errors.SynthesisError` naming where.
@@ -59,7 +59,6 @@ _BINARY = {
     ast.Mult: np.multiply,
     ast.Div: np.divide,
     ast.Pow: np.power,
-    ast.BitXor: np.power,
 }
 
 
@@ -94,7 +93,7 @@ def read_function(text: str) -> Function:
     if len(text) > MAX_LENGTH:
         raise _refuse(text[:40] + "…", f"longer than {MAX_LENGTH} characters")
     try:
-        tree = ast.parse(text.strip(), mode="eval").body
+        tree = ast.parse(text.strip().replace("^", "**"), mode="eval").body
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         raise _refuse(text, "it is not an expression") from None
     _check(tree, text, 0)

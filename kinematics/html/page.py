@@ -30,6 +30,7 @@ from .phrases import say
 from .pose import forces_html, kinematics_html
 from .structural import mechanism_html, structure_html
 from .svg import figure_svg
+from .synthesis import synthesis_html
 
 __all__ = ["SECTIONS", "report_page"]
 
@@ -109,6 +110,7 @@ SECTIONS: tuple[tuple[str, str, Callable[[ReportContents, str], str]], ...] = (
     ("cycle", "s_cycle", _cycle_html),
     ("gears", "s_gears", _gears_section),
     ("worked", "s_worked", _worked_html),
+    ("synthesis", "s_synthesis", synthesis_html),
 )
 
 

@@ -29,7 +29,10 @@ STEPS = 24
 STEMS = sorted(path.stem for path in FIXTURES.glob("*.edges"))
 #: the fixtures with point coordinates: their reports draw, solve and animate
 SKETCHED = [stem for stem in STEMS if read_edgelist(str(FIXTURES / f"{stem}.edges")).points]
-SECTION_IDS = ["mechanism", "structure", "kinematics", "forces", "cycle", "gears", "worked"]
+SECTION_IDS = [
+    *("mechanism", "structure", "kinematics", "forces", "cycle", "gears", "worked"),
+    "synthesis",
+]
 
 
 def run_cli(*argv: str) -> tuple[int, str, str]:

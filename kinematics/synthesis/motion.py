@@ -68,7 +68,8 @@ def _world(poses: np.ndarray, m: np.ndarray) -> np.ndarray:
 def pole(p1: np.ndarray, p2: np.ndarray) -> np.ndarray:
     """The pole of the displacement from pose p1 to p2 (x, y, θ in rad): its fixed point.
 
-    >>> pole(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, math.pi / 2])).round(12).tolist()
+    >>> p = pole(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, math.pi / 2]))
+    >>> (p.round(12) + 0.0).tolist()
     [0.0, 0.0]
 
     Raises

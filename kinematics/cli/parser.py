@@ -322,7 +322,7 @@ def _synthesize_arguments(command: argparse.ArgumentParser) -> None:
         "targets", metavar="TARGETS", help="CSV rows x,y (x,y,crank_deg with --timing)"
     )
     path.add_argument(
-        "--linkage", choices=("fourbar", "watt1", "stephenson3"), default="fourbar"
+        "--linkage", choices=("fourbar", "watt1", "watt2", "stephenson3"), default="fourbar"
     )
     path.add_argument(
         "--timing", action="store_true", help="the third column is the crank angle (degrees)"
@@ -340,12 +340,12 @@ def _synthesize_arguments(command: argparse.ArgumentParser) -> None:
         "--allow-rocker", action="store_true",
         help="with --timing, let the input rock over the targets' range instead of turning",
     )
-    path.add_argument("--generations", type=int, default=300, help="per search (default 300)")
+    path.add_argument("--generations", type=int, default=600, help="per search (default 600)")
     path.add_argument(
-        "--population", type=int, default=20, help="candidates per parameter (default 20)"
+        "--population", type=int, default=15, help="candidates per parameter (default 15)"
     )
     path.add_argument(
-        "--restarts", type=int, default=2, help="independent searches, seeds N, N+1, ... (2)"
+        "--restarts", type=int, default=4, help="independent searches, seeds N, N+1, ... (4)"
     )
     path.add_argument(
         "--jobs", "-j", type=int, default=1, metavar="N", help="local worker processes (default 1)"

@@ -20,13 +20,28 @@ Linkages:
   length d (D = A + d·u(θ0)), crank a, coupler b, rocker c, ``P`` as (p, q)
   in the coupler's frame (origin B, x along BC), the crank's world angle
   φ1 at the first target, the dyad's side.
-* ``watt1`` (Watt I: two four-bars in series): the four-bar above; its
-  rocker 3 is ternary (D, C, E) and drives the dyad 4–5 (E–F, F–G) to a third
-  ground pivot G; ``P`` on link 4. E as (ex, ey) in the rocker's frame
+
+The six-bars add a dyad 4–5 (E–F, F–G or F–H) to that four-bar and carry
+``P`` on link 4, as (p, q) in its frame (origin E, x along EF). They are
+named after the inversions of Watt's chain (the two ternary links jointed)
+and Stephenson's chain (the two ternary links apart): Watt I has a binary
+ground, Watt II a ternary one; Stephenson I has a binary ground jointed to
+both ternary links, Stephenson II a binary ground jointed to one, and
+Stephenson III a ternary ground (pyslvs's examples, ``pyslvs/example.py`` of
+KmolYuan/pyslvs, draw all five so; Plecnik and McCarthy, "Numerical
+synthesis of six-bar linkages for mechanical computation", call Svoboda's
+"double three-bar", two four-bars in series, a Watt II):
+
+* ``watt1`` (Watt I): the dyad joins the ternary coupler 2 (B, C, E) to the
+  ternary rocker 3 (D, C, H); ground A–D binary. E as (ex, ey) in the
+  coupler's frame (origin B, x along BC), H as (hx, hy) in the rocker's
   (origin D, x along DC).
-* ``stephenson3`` (Stephenson III): the four-bar whose coupler 2 is ternary
-  (B, C, E) drives the dyad 4–5 from E to a ground pivot G; ``P`` on link 4.
-  E in the coupler's frame (origin B, x along BC).
+* ``watt2`` (Watt II: two four-bars in series): the ternary rocker 3 (D, C,
+  E) drives the dyad to a third ground pivot G (gx, gy); E in the rocker's
+  frame.
+* ``stephenson3`` (Stephenson III): the ternary coupler 2 (B, C, E) drives
+  the dyad to a third ground pivot G; the ground (A, D, G) is the ternary link
+  not jointed to the coupler. E in the coupler's frame.
 
 >>> x = np.array([[0, 0, 0, 4, 1, 4, 3, 2, 1, 0, 1]], dtype=float)  # a crank–rocker
 >>> poses = linkage_poses(Linkage.FOURBAR, x, np.array([[0.0, np.pi / 2]]))
@@ -47,14 +62,18 @@ from structure.model import Mechanism, Target, make_point, make_target
 from structure.validation import validated
 
 __all__ = [
+    "LENGTHS",
     "PARAMETERS",
+    "WORLD_POINTS",
     "Linkage",
     "LinkagePoses",
+    "coupler_frame",
     "design_mechanism",
     "grashof_kind",
     "is_crank",
     "link_lengths",
     "linkage_poses",
+    "place",
     "target_records",
 ]
 
@@ -64,34 +83,63 @@ class Linkage(TextEnum):
 
     FOURBAR = "fourbar"
     WATT1 = "watt1"
+    WATT2 = "watt2"
     STEPHENSON3 = "stephenson3"
 
 
 _FOURBAR = ("ax", "ay", "theta0", "d", "a", "b", "c", "p", "q", "phi1", "side")
-_SIXBAR = (
-    *_FOURBAR[:7],
-    "ex",
-    "ey",
-    "gx",
-    "gy",
-    "e",
-    "f",
-    "p",
-    "q",
-    "phi1",
-    "side",
-    "side2",
-)
+_TO_GROUND = (*_FOURBAR[:7], "ex", "ey", "gx", "gy", "e", "f", "p", "q", "phi1", "side", "side2")
+_TO_ROCKER = (*_FOURBAR[:7], "ex", "ey", "hx", "hy", "e", "f", "p", "q", "phi1", "side", "side2")
 
 #: the names of each linkage's parameters, in the order of a design's row
 PARAMETERS: dict[Linkage, tuple[str, ...]] = {
     Linkage.FOURBAR: _FOURBAR,
-    Linkage.WATT1: _SIXBAR,
-    Linkage.STEPHENSON3: _SIXBAR,
+    Linkage.WATT1: _TO_ROCKER,
+    Linkage.WATT2: _TO_GROUND,
+    Linkage.STEPHENSON3: _TO_GROUND,
 }
 
 #: the lengths among the parameters (they scale with the targets, the angles do not)
-LENGTHS = frozenset(("ax", "ay", "d", "a", "b", "c", "p", "q", "ex", "ey", "gx", "gy", "e", "f"))
+LENGTHS = frozenset(
+    ("ax", "ay", "d", "a", "b", "c", "p", "q", "ex", "ey", "gx", "gy", "hx", "hy", "e", "f")
+)
+
+#: the parameters that are points of the plane (x, y): they move with the frame
+WORLD_POINTS = (("ax", "ay"), ("gx", "gy"))
+
+
+def place(linkage: Linkage, x: np.ndarray, z: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """The designs ``x`` moved by the similarity ``u ↦ z·u + w`` of the plane (complex z, w).
+
+    A point u = x + iy of every design goes to ``z·u + w`` (one z and w per
+    design): its pivots move so, its lengths grow by ``|z|``, its angles (the
+    ground's θ0 and the crank's φ1) turn by ``arg z``. The sides (assembly
+    modes) stay, since a similarity keeps the sense of every turn.
+
+    >>> x = np.array([[0, 0, 0, 4, 1, 4, 3, 2, 1, 0, 1]], dtype=float)
+    >>> place(Linkage.FOURBAR, x, np.array([2j]), np.array([1 + 0j]))[0].round(12).tolist()
+    [1.0, 0.0, 1.570796326795, 8.0, 2.0, 8.0, 6.0, 4.0, 2.0, 1.570796326795, 1.0]
+    """
+    names = PARAMETERS[linkage]
+    out = np.array(x, dtype=float, copy=True)
+    z = np.asarray(z, dtype=complex)
+    w = np.asarray(w, dtype=complex)
+    scale, turn = np.abs(z), np.angle(z)
+    moved: set[str] = set()
+    for px, py in WORLD_POINTS:
+        if px in names:
+            i, j = names.index(px), names.index(py)
+            u = z * (out[:, i] + 1j * out[:, j]) + w
+            out[:, i], out[:, j] = u.real, u.imag
+            moved.update((px, py))
+    for k, name in enumerate(names):
+        if name in moved:
+            continue
+        if name in LENGTHS:
+            out[:, k] *= scale
+        elif name in ("theta0", "phi1"):
+            out[:, k] += turn
+    return out
 
 
 @dataclass(frozen=True)
@@ -168,21 +216,49 @@ def linkage_poses(linkage: Linkage, x: np.ndarray, phi: np.ndarray) -> LinkagePo
     if linkage is Linkage.FOURBAR:
         points["P"] = _in_frame(bx, by, cx, cy, p, q, b)
         return LinkagePoses(points, (h1,), (mu1,))
-    # the ternary link carrying E: the rocker (Watt I) or the coupler (Stephenson III)
-    if linkage is Linkage.WATT1:
-        ox, oy, tx, ty, length = dx, dy, cx, cy, c
+    # the ternary link carrying E: the rocker (Watt II) or the coupler (Watt I, Stephenson III)
+    if linkage is Linkage.WATT2:
+        e_xy = _in_frame(dx, dy, cx, cy, col("ex"), col("ey"), c)
     else:
-        ox, oy, tx, ty, length = bx, by, cx, cy, b
-    e_xy = _in_frame(ox, oy, tx, ty, col("ex"), col("ey"), length)
+        e_xy = _in_frame(bx, by, cx, cy, col("ex"), col("ey"), b)
     ex, ey = e_xy[..., 0], e_xy[..., 1]
-    gx, gy, e, f = col("gx"), col("gy"), col("e"), col("f")
+    if linkage is Linkage.WATT1:  # the dyad's far pin H on the rocker
+        end = _in_frame(dx, dy, cx, cy, col("hx"), col("hy"), c)
+        gx, gy, far = end[..., 0], end[..., 1], "H"
+    else:  # on the ground
+        gx, gy, far = full(col("gx")), full(col("gy")), "G"
+    e, f = col("e"), col("f")
     fx, fy, h2 = _joint(ex, ey, gx, gy, e, f, _side(col("side2")))
     mu2 = _angle_at(ex, ey, fx, fy, gx, gy)
     points["E"] = e_xy
     points["F"] = np.stack([fx, fy], axis=-1)
-    points["G"] = np.stack([full(gx), full(gy)], axis=-1)
+    points[far] = np.stack([gx, gy], axis=-1)
     points["P"] = _in_frame(ex, ey, fx, fy, p, q, e)
     return LinkagePoses(points, (h1, h2), (mu1, mu2))
+
+
+def coupler_frame(
+    linkage: Linkage, poses: LinkagePoses, x: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The frame ``P`` is fixed in, as complex numbers (designs, inputs): origin and x axis.
+
+    ``P = origin + axis·(p + iq)``: the frame of the coupler (origin B, axis
+    along BC) of a four-bar, of link 4 (origin E, axis along EF) of a six-bar;
+    ``axis`` has length 1.
+
+    >>> x = np.array([[0, 0, 0, 4, 1, 4, 3, 2, 1, 0, 1]], dtype=float)
+    >>> poses = linkage_poses(Linkage.FOURBAR, x, np.array([[0.0]]))
+    >>> o, u = coupler_frame(Linkage.FOURBAR, poses, x)
+    >>> bool(np.isclose(o + u * (2 + 1j), complex(*poses.points["P"][0, 0])).all())
+    True
+    """
+    x = np.atleast_2d(x)
+    start, end, name = ("B", "C", "b") if linkage is Linkage.FOURBAR else ("E", "F", "e")
+    o = poses.points[start][..., 0] + 1j * poses.points[start][..., 1]
+    t = poses.points[end][..., 0] + 1j * poses.points[end][..., 1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        axis = (t - o) / x[:, PARAMETERS[linkage].index(name), None]
+    return o, axis
 
 
 def _in_frame(ox, oy, tx, ty, u, v, length) -> np.ndarray:
@@ -235,7 +311,8 @@ def design_mechanism(
     """The design ``x`` (one row) as a mechanism at the crank angle φ1 of its first target.
 
     Link 1 is the crank (the driver), 0 the ground; the pins are named A, B,
-    C, D (E, F, G) and the coupler point ``P`` is a marker on its link.
+    C, D (E, F, and G on the ground or H on the rocker) and the coupler point
+    ``P`` is a marker on its link.
 
     >>> x = np.array([0, 0, 0, 4, 1, 4, 3, 2, 1, 0, 1], dtype=float)
     >>> m = design_mechanism(Linkage.FOURBAR, x)
@@ -250,8 +327,9 @@ def design_mechanism(
     pairs.append(("3", "0", "R", "D"))
     on = "2"
     if linkage is not Linkage.FOURBAR:
-        carrier = "3" if linkage is Linkage.WATT1 else "2"
-        pairs += [(carrier, "4", "R", "E"), ("4", "5", "R", "F"), ("5", "0", "R", "G")]
+        carrier = "3" if linkage is Linkage.WATT2 else "2"
+        end = ("3", "H") if linkage is Linkage.WATT1 else ("0", "G")
+        pairs += [(carrier, "4", "R", "E"), ("4", "5", "R", "F"), ("5", end[0], "R", end[1])]
         on = "4"
     points = [make_point(k, float(v[0]), float(v[1])) for k, v in xy.items() if k != "P"]
     points.append(make_point("P", float(xy["P"][0]), float(xy["P"][1]), on))

@@ -28,6 +28,9 @@ from kinematics.synthesis.path import (
 )
 from structure import analyze, read_edgelist
 
+from .test_linkages import SIXBARS
+from .test_linkages import row as sixbar_row
+
 # targets traced by a known crank–rocker (A (0, 0), d 4, a 1, b 4, c 3, P (2, 1) on the coupler)
 KNOWN = np.array([0, 0, 0, 4, 1, 4, 3, 2, 1, 0.3, 1.0])
 CRANK = np.array([0.0, 40.0, 80.0, 120.0, 160.0, 200.0])
@@ -201,13 +204,51 @@ def test_the_placement_and_p_are_fitted_exactly(mode) -> None:
 def test_the_four_bars_least_transmission_angle_is_exact() -> None:
     s, _, _ = _scale(PathProblem(TARGETS, CRANK))
     rng = np.random.default_rng(1)
-    x = np.repeat(KNOWN[None], 200, axis=0)
+    x = np.repeat(KNOWN[None], 60, axis=0)
     k = [PARAMETERS[Linkage.FOURBAR].index(n) for n in ("d", "a", "b", "c")]
-    x[:, k] *= rng.uniform(0.8, 1.25, size=(200, 4))
+    x[:, k] *= rng.uniform(0.8, 1.25, size=(60, 4))
     x = x[is_crank(*x[:, k].T)]
-    turn = np.linspace(0.0, 2 * math.pi, 20001)
+    turn = np.linspace(0.0, 2 * math.pi, 8001)
     mu = linkage_poses(Linkage.FOURBAR, x, x[:, [9]] + turn).transmission[0]
     sampled = np.minimum(mu, np.pi - mu).min(axis=1)
     exact = _fourbar_worst(s, x)
     assert np.all(exact <= sampled + 1e-12)
     np.testing.assert_allclose(exact, sampled, atol=1e-6)
+
+
+# ------------------------------------------------------------------ six-bars, end to end
+SIXBAR_CRANK = np.arange(8) * 40.0
+
+
+def _sixbar_targets(linkage: Linkage) -> np.ndarray:
+    x = sixbar_row(linkage, **SIXBARS[linkage])
+    phi = x[PARAMETERS[linkage].index("phi1")] + np.radians(SIXBAR_CRANK)
+    return linkage_poses(linkage, x[None], phi[None]).points["P"][0]
+
+
+def _check_sixbar(design, targets: np.ndarray, share: float) -> None:
+    size = np.max(np.linalg.norm(targets - targets.mean(axis=0), axis=1))
+    assert design.error_max < share * size
+    plan = make_plan(analyze(design.mechanism))
+    inputs = np.radians(np.concatenate([[0.0], SIXBAR_CRANK[1:]]))
+    moved = sweep(plan, inputs, rates=False)
+    gaps = np.linalg.norm(moved.points["P"]["position"] - targets, axis=1)
+    np.testing.assert_allclose(gaps, design.errors, atol=1e-9)
+    turn = sweep(plan, np.linspace(0, 2 * math.pi, 721), rates=False)  # one branch, all of it
+    mu = np.degrees(np.concatenate([v for v in turn.transmission.values()]))
+    assert mu.min() >= 30 - 1e-6 and mu.max() <= 150 + 1e-6
+
+
+@pytest.mark.parametrize("linkage", list(SIXBARS))
+def test_a_six_bar_path_generator_the_solvers_confirm(linkage: Linkage) -> None:
+    targets = _sixbar_targets(linkage)
+    design = synthesize_path(PathProblem(targets, SIXBAR_CRANK, linkage, seed=0, **QUICK))
+    _check_sixbar(design, targets, 0.1)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("linkage", list(SIXBARS))
+def test_a_six_bar_nearly_finds_the_one_that_drew_the_targets(linkage: Linkage) -> None:
+    targets = _sixbar_targets(linkage)
+    design = synthesize_path(PathProblem(targets, SIXBAR_CRANK, linkage, seed=0), jobs=2)
+    _check_sixbar(design, targets, 0.01)

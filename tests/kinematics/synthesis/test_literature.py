@@ -6,9 +6,9 @@ on a hybrid-combined differential evolution and Jaya algorithm", HCDJ; repositor
 sy-nguyen-van/DE_Jaya_Synthesis_Four_Bar_Mechanisms, ``Case1/Objf1.m`` to
 ``Case5/Objf5.m``), problems of the earlier literature (their ``Case2/CheckCASE2.m`` scores
 the designs of Cabrera, Simon & Prado 2002 and of Kunjur & Krishnamurty 1997 on case 2; the
-six points on a line and the eighteen on a closed curve are also cases 4 and 12 of
-jmejia8/eca-four-bar-mechanisms). In each, the error is Σ|P_i − T_i|² over the targets, P_i
-the coupler point at the crank's angle of target i:
+six points on a line and the eighteen on a closed curve are also, scaled and centred, cases 4
+and 12 of jmejia8/eca-four-bar-mechanisms, ``testTrajectories.jl``). In each, the error is
+Σ|P_i − T_i|² over the targets, P_i the coupler point at the crank's angle of target i:
 
 1. six points on a vertical line, (20, 20) to (20, 45); no timing (the crank's angles are
    unknowns, in order); the frame free;

@@ -124,6 +124,11 @@ def test_bad_targets_are_named(targets, crank, message) -> None:
         synthesize_path(PathProblem(targets, crank, **QUICK))
 
 
+def test_crank_angles_from_the_ground_need_timing() -> None:
+    with pytest.raises(SynthesisError, match="need targets with timing"):
+        synthesize_path(PathProblem(TARGETS, None, crank_from_ground=True, **QUICK))
+
+
 def test_no_feasible_design_names_the_constraint_that_refused_most() -> None:
     with pytest.raises(InfeasibleDesignError, match="transmission angle constraint") as info:
         synthesize_path(

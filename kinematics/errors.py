@@ -40,11 +40,13 @@ __all__ = [
     "DynamicsError",
     "ExactTimeoutError",
     "IndeterminateError",
+    "InfeasibleDesignError",
     "IntegrationError",
     "NoSteadyRunningError",
     "SingularPoseError",
     "StallError",
     "SweepSizeError",
+    "SynthesisError",
     "TravelError",
     "UndercutError",
     "inputs_text",
@@ -226,3 +228,20 @@ class TravelError(MechanismError):
 
 class AssemblyModeError(MechanismError, ValueError):
     """An assembly mode asked for that a group does not have at the sketch's inputs."""
+
+
+class SynthesisError(MechanismError):
+    """A synthesis problem that has no answer as posed: too few or too many targets, a
+    function undefined on its range, targets that fix no linkage (the message says which)."""
+
+
+class InfeasibleDesignError(SynthesisError):
+    """No candidate design met the constraints within the search budget.
+
+    ``rejections`` counts the candidates each constraint rejected (its name ->
+    count), so the message can say which one rejected most.
+    """
+
+    def __init__(self, message: str, rejections: dict[str, int] | None = None):
+        self.rejections = dict(rejections or {})
+        super().__init__(message)

@@ -68,10 +68,12 @@ __all__ = [
     "Pair",
     "PairKind",
     "PointDef",
+    "Target",
     "make_driver",
     "make_load",
     "make_pair",
     "make_point",
+    "make_target",
     "validated",
 ]
 
@@ -384,6 +386,38 @@ class PointDef:
 
 
 @dataclass(frozen=True, slots=True)
+class Target:
+    """A point the marker ``P`` is to pass through: a design target, kept for the figures.
+
+    Written by the dimensional synthesis (``assur synthesize``) beside its
+    design. ``input_deg`` is the driver's rotation from the sketch (degrees)
+    at which ``P`` should be there (prescribed timing), ``angle_deg`` the
+    orientation of ``P``'s link there (a pose of motion generation); either
+    may be None.
+
+    >>> Target("T1", 0.5, 1.0, input_deg=30.0).statement
+    'target T1 0.5 1 input=30'
+    """
+
+    name: str
+    x: float
+    y: float
+    input_deg: float | None = None
+    angle_deg: float | None = None
+    line_no: int = field(default=0, compare=False)
+
+    @property
+    def statement(self) -> str:
+        """The canonical ``target`` line."""
+        words = ["target", self.name, number_text(self.x), number_text(self.y)]
+        if self.input_deg is not None:
+            words.append(f"input={number_text(self.input_deg)}")
+        if self.angle_deg is not None:
+            words.append(f"angle={number_text(self.angle_deg)}")
+        return " ".join(words)
+
+
+@dataclass(frozen=True, slots=True)
 class Load:
     """A load statement: ``force``, ``moment``, ``mass``, ``gravity`` or ``balance``.
 
@@ -589,6 +623,36 @@ def make_point(
     return PointDef(name, float(x), float(y), on, line_no, exact)
 
 
+def make_target(
+    name: str,
+    x: float,
+    y: float,
+    input_deg: float | None = None,
+    angle_deg: float | None = None,
+    *,
+    line_no: int = 0,
+) -> Target:
+    """Build a :class:`Target`, with the checks of a point's coordinates for all its numbers.
+
+    Raises
+    ------
+    StatementError
+        A coordinate, input or angle that is not a finite number within the limits.
+    """
+    check_point(name, x, y)
+    for value in (input_deg, angle_deg):
+        if value is not None:
+            check_point(name, value, 0.0)
+    return Target(
+        name,
+        float(x),
+        float(y),
+        None if input_deg is None else float(input_deg),
+        None if angle_deg is None else float(angle_deg),
+        line_no,
+    )
+
+
 def make_load(
     kind: LoadKind | str,
     link: str,
@@ -662,6 +726,7 @@ class Mechanism:
     cams: tuple[CamRef, ...] = ()
     #: the drive and the loads over the cycle (``drive``, ``cycle`` lines: :mod:`structure.cycle`)
     cycle_loads: tuple[CycleLoad, ...] = ()
+    targets: tuple[Target, ...] = ()
     links: tuple[str, ...] = field(init=False, repr=False, compare=False)
     shared_hinges: tuple[Hinge, ...] = field(init=False, repr=False, compare=False)
     compound_hinges: Mapping[str, Hinge] = field(init=False, repr=False, compare=False)
@@ -747,6 +812,7 @@ class Mechanism:
             "loads": self.loads,
             "cams": self.cams,
             "cycle_loads": self.cycle_loads,
+            "targets": self.targets,
         }
         fields.update(changes)
         if "drivers" in changes:

@@ -15,6 +15,7 @@ from .. import figures
 from ..figures.animation import animate, there_and_back, turn_inputs
 from ..figures.cam import cam_sheet
 from ..figures.dynamics import balance_sheet, dynamics_sheet
+from ..figures.synthesis import structural_error_figure, target_figure
 from ..solvers.plan import make_plan
 from ..solvers.solve import solve_pose
 
@@ -37,8 +38,10 @@ __all__ = [
     "save_forces_sheet",
     "save_kinematics_sheet",
     "save_mechanism_drawing",
+    "save_structural_error",
     "save_structure_sheet",
     "save_sweep_figure",
+    "save_target_figure",
     "there_and_back",
     "turn_inputs",
 ]
@@ -109,3 +112,13 @@ def save_dynamics_sheet(result: MachineDynamics, path: str) -> None:
 def save_balance_sheet(result: Balanced, path: str) -> None:
     """The shaking force before and after a balance, and the driving torque."""
     _save(path, lambda: balance_sheet(result))
+
+
+def save_target_figure(mechanism, path: str) -> None:
+    """A synthesised design: its targets over the path of its marker P."""
+    _save(path, lambda: target_figure(mechanism))
+
+
+def save_structural_error(design, path: str) -> None:
+    """A function generator's structural error over its range."""
+    _save(path, lambda: structural_error_figure(design))

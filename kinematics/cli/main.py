@@ -45,6 +45,7 @@ RUNNERS: dict[str, tuple[str, str]] = {
     "cam": ("cam", "run_cam"),
     "dynamics": ("dynamics", "run_dynamics"),
     "balance": ("dynamics", "run_balance"),
+    "synthesize": ("synthesize", "run_synthesize"),
 }
 
 

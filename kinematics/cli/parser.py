@@ -438,6 +438,90 @@ def _balance_arguments(command: argparse.ArgumentParser) -> None:
     _add_plot(command, "draw the shaking force's polar plot before and after")
 
 
+def _synthesize_arguments(command: argparse.ArgumentParser) -> None:
+    """``synthesize path|function|motion ...``: a design from targets, as a mechanism file."""
+    kinds = command.add_subparsers(dest="kind", required=True)
+
+    def common(sub: argparse.ArgumentParser, draws: str) -> None:
+        sub.add_argument(
+            "-o", "--output", metavar="OUT", help="write the design here (.edges or .json)"
+        )
+        _add_json(sub)
+        _add_plot(sub, draws)
+
+    path = kinds.add_parser("path", help="a coupler point through N targets")
+    path.add_argument(
+        "targets", metavar="TARGETS", help="CSV rows x,y (x,y,crank_deg with --timing)"
+    )
+    path.add_argument(
+        "--linkage", choices=("fourbar", "watt1", "watt2", "stephenson3"), default="fourbar"
+    )
+    path.add_argument(
+        "--timing", action="store_true", help="the third column is the crank angle (degrees)"
+    )
+    path.add_argument("--seed", type=int, default=0, help="the search's seed (default 0)")
+    path.add_argument(
+        "--transmission", type=float, default=30.0, metavar="DEG",
+        help="least transmission angle over the motion (default 30)",
+    )
+    path.add_argument(
+        "--ratio", type=float, default=10.0, metavar="R",
+        help="largest ratio of the longest link to the shortest (default 10)",
+    )
+    path.add_argument(
+        "--allow-rocker", action="store_true",
+        help="with --timing, let the input rock over the targets' range instead of turning",
+    )
+    path.add_argument("--generations", type=int, default=600, help="per search (default 600)")
+    path.add_argument(
+        "--population", type=int, default=15, help="candidates per parameter (default 15)"
+    )
+    path.add_argument(
+        "--restarts", type=int, default=4, help="independent searches, seeds N, N+1, ... (4)"
+    )
+    path.add_argument(
+        "--jobs", "-j", type=int, default=1, metavar="N", help="local worker processes (default 1)"
+    )
+    path.add_argument(
+        "--scheduler", metavar="ADDRESS", help="run the searches on this Dask cluster"
+    )
+    path.add_argument(
+        "--dask-local", type=int, default=0, metavar="N", help="on a Dask LocalCluster of N workers"
+    )
+    common(path, "draw the targets over the coupler curve")
+
+    function = kinds.add_parser("function", help="a four-bar or crank–slider for y = f(x)")
+    function.add_argument("--expr", required=True, help="f(x), e.g. 'log10(x)' (never evaluated)")
+    function.add_argument("--x", nargs=2, type=float, required=True, metavar=("X0", "X1"))
+    function.add_argument("--input-range", type=float, required=True, metavar="DEG")
+    function.add_argument(
+        "--output-range", type=float, required=True, metavar="DEG_OR_M",
+        help="the output's swing: degrees (four-bar) or metres (crank-slider)",
+    )
+    function.add_argument("--points", type=int, default=3, help="precision points (default 3)")
+    function.add_argument("--linkage", choices=("fourbar", "crank-slider"), default="fourbar")
+    function.add_argument(
+        "--input-start", type=float, default=45.0, metavar="DEG", help="crank angle at x0 (45)"
+    )
+    function.add_argument(
+        "--output-start", type=float, metavar="DEG_OR_M",
+        help="output at x0 (default 135° or twice the slider's range)",
+    )
+    function.add_argument("--spacing", choices=("chebyshev", "even"), default="chebyshev")
+    function.add_argument(
+        "--size", type=float, default=1.0, metavar="M", help="the four-bar's ground link (1 m)"
+    )
+    common(function, "plot the structural error over the range")
+
+    motion = kinds.add_parser("motion", help="a four-bar carrying a body through 2 to 5 poses")
+    motion.add_argument("poses", metavar="POSES", help="CSV rows x,y,angle_deg")
+    motion.add_argument(
+        "--check", type=int, default=12, help="designs run through the solvers (default 12)"
+    )
+    motion.add_argument("--designs", type=int, default=10, help="designs listed (default 10)")
+    common(motion, "draw the poses over the coupler curve")
+
+
 #: every command, in the order ``assur --help`` lists them: name, help line, its arguments
 COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...] = (
     (
@@ -487,6 +571,11 @@ COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...]
         _dynamics_arguments,
     ),
     ("balance", "counterweights that balance the shaking force", _balance_arguments),
+    (
+        "synthesize",
+        "dimensional synthesis: path, function or motion generation, as a mechanism file",
+        _synthesize_arguments,
+    ),
 )
 
 

@@ -32,6 +32,7 @@ from .phrases import say
 from .pose import forces_html, kinematics_html
 from .structural import mechanism_html, structure_html
 from .svg import figure_svg
+from .synthesis import synthesis_html
 
 __all__ = ["SECTIONS", "report_page"]
 
@@ -111,6 +112,7 @@ SECTIONS: tuple[tuple[str, str, Callable[[ReportContents, str], str]], ...] = (
     ("worked", "s_worked", _worked_html),
     ("cams", "s_cams", cams_html),
     ("dynamics", "s_dynamics", dynamics_html),
+    ("synthesis", "s_synthesis", synthesis_html),
 )
 
 

@@ -27,9 +27,10 @@ fy``, ``moment LINK M``, ``mass LINK m J S``, ``gravity gx gy``, ``balance
 LINK POINT angle=DEG``; over the cycle (:mod:`structure.cycle`): ``drive LINK
 LAW``, ``cycle moment LINK LAW``, ``cycle force LINK POINT angle=DEG LAW``. A cam
 with a profile: ``cam CAM LINK FILE [at=DEG]`` (:mod:`structure.readwrite.camfile`).
-The words ``name``, ``ground``, ``driver``, ``point``, ``cam``, ``drive``,
-``cycle`` and the load words are reserved at the start of a line (unless the
-third word is a pair kind).
+A design target of the marker P (dimensional synthesis): ``target NAME x y
+[input=DEG] [angle=DEG]``. The words ``name``, ``ground``, ``driver``, ``point``,
+``cam``, ``drive``, ``cycle``, ``target`` and the load words are reserved at the
+start of a line (unless the third word is a pair kind).
 
 >>> m = parse_edgelist(["driver 1", "0 1 R A", "1 2 R B", "2 3 R C", "3 0 R D"])
 >>> m.driver_links, len(m.pairs)
@@ -63,10 +64,12 @@ from ..model import (
     Mechanism,
     Pair,
     PointDef,
+    Target,
     make_driver,
     make_load,
     make_pair,
     make_point,
+    make_target,
 )
 from ..utils import paused_gc
 from ..validation import (
@@ -92,7 +95,16 @@ __all__ = [
 
 #: the words that start a statement other than a pair (``name`` starts a title)
 _STATEMENTS = frozenset(
-    ("ground", "driver", "point", "cam", "drive", "cycle", *(k.value for k in LoadKind))
+    (
+        "ground",
+        "driver",
+        "point",
+        "cam",
+        "drive",
+        "cycle",
+        "target",
+        *(k.value for k in LoadKind),
+    )
 )
 _KIND_OF = {k.value: k for k in PairKind}
 
@@ -153,6 +165,7 @@ def parse_edgelist(lines: Iterable[str], source: str = "<string>") -> Mechanism:
         tuple(found.loads),
         cams=tuple(found.cams),
         cycle_loads=tuple(found.cycle_loads),
+        targets=tuple(found.targets),
     )
     return validated(mechanism, ground_line=found.ground_line)
 
@@ -169,6 +182,7 @@ class _Statements:
     points: dict[str, PointDef] = field(default_factory=dict)
     loads: list[Load] = field(default_factory=list)
     cycle_loads: list[CycleLoad] = field(default_factory=list)
+    targets: list[Target] = field(default_factory=list)
     problems: list[EdgeListProblem] = field(default_factory=list)
     cams: list[CamRef] = field(default_factory=list)
     #: where the description comes from: a cam's program file is read beside it
@@ -191,6 +205,8 @@ class _Statements:
             self.cams.append(cam_from_tokens(tokens, line_no, self.source))
         elif head in ("drive", "cycle"):
             self.cycle_loads.append(cycle_load_from_tokens(tokens, line_no))
+        elif head == "target":
+            self._add_target(_target(tokens, line_no))
         else:
             self.loads.append(_load(tokens, line_no))
 
@@ -206,6 +222,12 @@ class _Statements:
             first = self.points[point.name].line_no
             raise StatementError(f"point {point.name} already given on line {first}")
         self.points[point.name] = point
+
+    def _add_target(self, target: Target) -> None:
+        first = next((t.line_no for t in self.targets if t.name == target.name), None)
+        if first is not None:
+            raise StatementError(f"target {target.name} already given on line {first}")
+        self.targets.append(target)
 
 
 # ----------------------------------------------------------------------------- pairs
@@ -465,6 +487,26 @@ def _point(tokens: list[str], line_no: int) -> PointDef:
         raise StatementError(_with_reason(refused.reason, unread)) from None
 
 
+def _target(tokens: list[str], line_no: int) -> Target:
+    """``target NAME x y [input=DEG] [angle=DEG]`` (a design target of the marker P)."""
+    usage = "expected 'target NAME x y [input=DEG] [angle=DEG]'"
+    if not 4 <= len(tokens) <= 6:
+        raise StatementError(usage)
+    options: dict[str, float] = {}
+    for tok in tokens[4:]:
+        key, eq, text = tok.partition("=")
+        if key not in ("input", "angle") or not eq or key in options:
+            raise StatementError(f"unexpected token {tok!r} ({usage})")
+        options[key] = _option_number(text)
+    try:
+        x, y = _number(tokens[2]), _number(tokens[3])
+    except ValueError:
+        x = y = math.nan  # make_target refuses it with its reason
+    return make_target(
+        tokens[1], x, y, options.get("input"), options.get("angle"), line_no=line_no
+    )
+
+
 def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
     """Read a mechanism from an edge-list file (UTF-8).
 
@@ -500,6 +542,7 @@ def write_edgelist(mechanism: Mechanism) -> str:
     out.extend(load.statement for load in mechanism.loads)
     out.extend(_cam_statement(mechanism, ref) for ref in mechanism.cams)
     out.extend(load.statement for load in mechanism.cycle_loads)
+    out.extend(t.statement for t in mechanism.targets)
     return "\n".join(out) + "\n"
 
 

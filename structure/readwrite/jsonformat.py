@@ -7,7 +7,8 @@
      "pairs": [{"links": ["0", "1"], "kind": "R", "point": "A"},
                {"links": ["3", "0"], "kind": "P", "point": "C", "angle": 30},
                {"links": ["1", "4"], "kind": "H", "flat": "4", "centers": ["O1", null]}],
-     "points": {"A": [0, 0], "M": {"xy": [0.1, 0.2], "on": "2"}}}
+     "points": {"A": [0, 0], "M": {"xy": [0.1, 0.2], "on": "2"}},
+     "targets": {"T1": {"xy": [0.5, 1.0], "input": 30}}}
 
 >>> m = mechanism_from_json('{"drivers": ["1"], "pairs": [{"links": [0, 1], "kind": "R"}]}')
 >>> m.pairs[0].label
@@ -33,10 +34,12 @@ from ..model import (
     Mechanism,
     Pair,
     PointDef,
+    Target,
     make_driver,
     make_load,
     make_pair,
     make_point,
+    make_target,
 )
 from ..validation import DRIVER_KEYS, tooth_number, validated
 from .camfile import cam_from_item, cam_to_item
@@ -49,7 +52,18 @@ __all__ = [
     "mechanism_to_json",
 ]
 
-_TOP_KEYS = ("name", "ground", "drivers", "pairs", "points", "loads", "cams", "drive", "cycle")
+_TOP_KEYS = (
+    "name",
+    "ground",
+    "drivers",
+    "pairs",
+    "points",
+    "loads",
+    "cams",
+    "drive",
+    "cycle",
+    "targets",
+)
 _PAIR_FIELDS = (
     "links",
     "kind",
@@ -198,6 +212,7 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
     loads = _read_loads(data.get("loads", []), problems)
     cams = _read_cams(data.get("cams", []), source, problems)
     cycle_loads = _read_cycle_loads(data.get("drive"), data.get("cycle", []), problems)
+    targets = _read_targets(data.get("targets", {}), problems)
     if problems:
         raise EdgeListError(source, problems)
     mechanism = Mechanism(
@@ -210,6 +225,7 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
         tuple(loads),
         cams=tuple(cams),
         cycle_loads=tuple(cycle_loads),
+        targets=targets,
     )
     return validated(mechanism)
 
@@ -477,6 +493,35 @@ def _read_cycle_loads(drive: Any, raw: Any, problems: _Problems) -> list[CycleLo
     return out
 
 
+def _read_targets(raw: Any, problems: _Problems) -> tuple[Target, ...]:
+    """``{"T1": {"xy": [x, y], "input": DEG, "angle": DEG}}`` (or ``"T1": [x, y]``)."""
+    if not isinstance(raw, dict):
+        problems.add("targets", "must be an object NAME: {xy: [x, y], input: DEG, angle: DEG}")
+        return ()
+    targets: list[Target] = []
+    for key, value in raw.items():
+        where = f"targets[{key!r}]"
+        item = value if isinstance(value, dict) else {"xy": value}
+        extra = set(item) - {"xy", "input", "angle"}
+        xy = item.get("xy")
+        options = [item.get(k) for k in ("input", "angle")]
+        if extra:
+            problems.add(where, f"unknown keys {sorted(extra)}")
+        elif (
+            not isinstance(xy, list)
+            or len(xy) != 2
+            or not all(map(_is_number, xy))
+            or not all(v is None or _is_number(v) for v in options)
+        ):
+            problems.add(where, "needs 'xy': [x, y] and optional 'input', 'angle' as numbers")
+        else:
+            try:
+                targets.append(make_target(str(key), xy[0], xy[1], *options))
+            except StatementError as exc:
+                problems.add(where, exc.reason)
+    return tuple(targets)
+
+
 def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
     """The JSON-shaped dict of ``mechanism`` (inverse of :func:`mechanism_from_dict`)."""
     out: dict[str, Any] = {}
@@ -538,6 +583,15 @@ def mechanism_to_dict(mechanism: Mechanism) -> dict[str, Any]:
         for p in mechanism.points.values():
             xy = [p.exact[0] or p.x, p.exact[1] or p.y]
             out["points"][p.name] = {"xy": xy, "on": p.on} if p.on else xy
+    if mechanism.targets:
+        out["targets"] = {}
+        for t in mechanism.targets:
+            item: dict[str, Any] = {"xy": [t.x, t.y]}
+            if t.input_deg is not None:
+                item["input"] = t.input_deg
+            if t.angle_deg is not None:
+                item["angle"] = t.angle_deg
+            out["targets"][t.name] = item
     return out
 
 

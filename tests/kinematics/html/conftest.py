@@ -39,6 +39,7 @@ SECTION_IDS = [
     "worked",
     "cams",
     "dynamics",
+    "synthesis",
 ]
 #: the fixtures whose pages the default run checks, one of each kind of page: no coordinates,
 #: a whole turn, a stretch, loads, inertia, a triad, two drivers, a cam, gears; every other

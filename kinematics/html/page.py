@@ -109,10 +109,10 @@ SECTIONS: tuple[tuple[str, str, Callable[[ReportContents, str], str]], ...] = (
     ("forces", "s_forces", forces_html),
     ("cycle", "s_cycle", _cycle_html),
     ("gears", "s_gears", _gears_section),
-    ("worked", "s_worked", _worked_html),
     ("cams", "s_cams", cams_html),
     ("dynamics", "s_dynamics", dynamics_html),
     ("synthesis", "s_synthesis", synthesis_html),
+    ("worked", "s_worked", _worked_html),
 )
 
 

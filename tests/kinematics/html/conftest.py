@@ -36,10 +36,10 @@ SECTION_IDS = [
     "forces",
     "cycle",
     "gears",
-    "worked",
     "cams",
     "dynamics",
     "synthesis",
+    "worked",
 ]
 #: the fixtures whose pages the default run checks, one of each kind of page: no coordinates,
 #: a whole turn, a stretch, loads, inertia, a triad, two drivers, a cam, gears; every other

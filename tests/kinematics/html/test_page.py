@@ -64,7 +64,7 @@ def mechanism(stem: str):
 # ------------------------------------------------------------------ every fixture
 @pytest.mark.parametrize("stem", sampled(STEMS))
 def test_every_fixture_makes_a_whole_report(all_reports, stem):
-    """Each fixture's page parses, has the seven sections in order, unique ids, no network."""
+    """Each fixture's page parses, has its sections in order, unique ids, no network."""
     page = all_reports.page(stem)
     root = parse(page)
     assert root.get("lang") == "en"

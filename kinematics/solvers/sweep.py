@@ -19,7 +19,6 @@ from __future__ import annotations
 import csv
 import io
 import math
-import os
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import partial
@@ -27,6 +26,8 @@ from functools import partial
 import numpy as np
 
 from structure.errors import EdgeListError, EdgeListProblem
+from structure.limits import check_size, memory_limit
+from structure.readwrite.textfile import MAX_FILE_BYTES, open_user_file
 
 from ..errors import SweepSizeError
 from ..kinetostatics.forces import forces_over
@@ -50,14 +51,6 @@ __all__ = [
 #: bytes per pose a sweep's results and the solve's temporaries take, per named point and link
 #: (measured: 90–320 with rates; a third of it for positions only)
 BYTES_PER_POSE_ITEM = 320
-
-
-def memory_limit() -> int:
-    """The memory a sweep may take: half of this machine's (4 GiB where it cannot be read)."""
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
-    except (ValueError, OSError, AttributeError):  # pragma: no cover - platform
-        return 4 * 2**30
 
 
 class _LazyMapping(Mapping):
@@ -244,18 +237,22 @@ def sweep(
     return Sweep(inputs, links, points, transmission, balancing)
 
 
-def _check_size(plan: SolvePlan, poses: int, rates: bool) -> None:
-    """Refuse a sweep whose results would not fit in the memory a sweep may take."""
+def _pose_bytes(plan: SolvePlan, rates: bool = True) -> int:
+    """The memory one pose of a sweep of ``plan`` takes (bytes)."""
     items = len(plan.points) + len(plan.mechanism.moving_links)
-    per_pose = BYTES_PER_POSE_ITEM * max(items, 1) // (1 if rates else 3)
-    limit = memory_limit()
-    if poses * per_pose > limit:
-        raise SweepSizeError(
-            f"a sweep of {poses} poses would take about {poses * per_pose / 1e9:.3g} GB of "
-            f"memory, more than the {limit / 1e9:.3g} GB a sweep may take (half of this "
-            f"machine's): ask for at most {limit // per_pose} poses (steps=, --steps on the "
-            "command line), or sweep the inputs in parts"
-        )
+    return BYTES_PER_POSE_ITEM * max(items, 1) // (1 if rates else 3)
+
+
+def _check_size(plan: SolvePlan, poses: int, rates: bool, what: str = "") -> None:
+    """Refuse a sweep whose results would not fit in the memory a run may take."""
+    check_size(
+        poses,
+        _pose_bytes(plan, rates),
+        what or f"a sweep of {poses} poses",
+        "ask for at most {fit} poses (steps=, --steps on the command line), or sweep the "
+        "inputs in parts",
+        error=SweepSizeError,
+    )
 
 
 def _link_column(motion: Motion, link: str, key: str) -> np.ndarray:
@@ -454,7 +451,12 @@ def parse_inputs(lines, plan: SolvePlan, source: str = "<inputs>") -> np.ndarray
     rows: list[list[float]] = []
     problems: list[EdgeListProblem] = []
     first = True
+    most = memory_limit() // _pose_bytes(plan)  # more poses than a sweep of them may take
+    lines = iter(lines)
     for line_no, raw in enumerate(lines, start=1):
+        if len(rows) >= most:  # counted to the end, not kept: the sweep of them is refused
+            poses = len(rows) + sum(1 for line in (raw, *lines) if line.split("#", 1)[0].strip())
+            _check_size(plan, poses, True, f"the {poses} poses of {source}")
         text = raw.split("#", 1)[0].replace(",", " ").split()
         if not text:
             continue
@@ -504,13 +506,11 @@ def _numbers(tokens: list[str]) -> list[float] | None:
     return values if all(math.isfinite(v) for v in values) else None
 
 
-def read_inputs(path, plan: SolvePlan) -> np.ndarray:
-    """:func:`parse_inputs` of a file (an unreadable file is an :class:`EdgeListError` too)."""
-    try:
-        with open(path, encoding="utf-8") as handle:
-            lines = handle.readlines()
-    except (OSError, UnicodeDecodeError) as exc:
-        reason = getattr(exc, "strerror", None) or str(exc)
-        problem = EdgeListProblem(0, "", f"cannot read it: {reason}")
-        raise EdgeListError(str(path), [problem]) from exc
-    return parse_inputs(lines, plan, str(path))
+def read_inputs(path, plan: SolvePlan, max_bytes: int = MAX_FILE_BYTES) -> np.ndarray:
+    """:func:`parse_inputs` of a file (an unreadable file is an :class:`EdgeListError` too).
+
+    Only a regular file of at most ``max_bytes`` is read
+    (:func:`~structure.readwrite.textfile.open_user_file`).
+    """
+    with open_user_file(path, max_bytes) as handle:
+        return parse_inputs(handle, plan, str(path))

@@ -42,7 +42,7 @@ from .readwrite.edgelist import parse_edgelist
 from .readwrite.jsonformat import mechanism_from_dict, mechanism_from_json
 from .readwrite.reports import mobility_error_dict
 from .readwrite.table import Column
-from .readwrite.textfile import MAX_FILE_BYTES, MAX_FILE_OPTION, read_text
+from .readwrite.textfile import MAX_FILE_BYTES, MAX_FILE_OPTION, read_text, readable_bytes
 from .report import analyze
 from .utils import paused_gc
 
@@ -126,6 +126,7 @@ def _stdin_items(stdin: IO[str] | None, max_bytes: int) -> Iterator[BatchItem]:
     """One item per non-blank line of ``stdin``; a line longer than ``max_bytes`` is skipped."""
     if stdin is None:
         return
+    max_bytes = readable_bytes(max_bytes)
     number = 0
     while True:
         line = stdin.readline(max_bytes + 1)

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import os
 
-from .errors import SizeError, clipped
+from .errors import SizeError
 
 __all__ = ["check_size", "memory_limit", "memory_text"]
 
@@ -89,6 +89,6 @@ def check_size(
         return
     fit = max(int((allowed - fixed) // bytes_each), 0) if bytes_each > 0 else count
     raise error(
-        f"{clipped(what)} would take about {memory_text(need)} of memory, more than the "
+        f"{what} would take about {memory_text(need)} of memory, more than the "
         f"{memory_text(allowed)} a run may take (half of this machine's): " + ask.format(fit=fit)
     )

@@ -29,7 +29,6 @@ An ``OSError`` while writing becomes a :class:`~structure.errors.MechanismError`
 from __future__ import annotations
 
 import os
-import secrets
 import stat
 from collections.abc import Iterator
 from contextlib import contextmanager, suppress
@@ -74,7 +73,7 @@ def _temporary(target: Path) -> tuple[Path, int]:
     with suppress(OSError):
         mode = stat.S_IMODE(os.stat(target).st_mode)
     for _ in range(100):
-        name = f".{target.stem}.{secrets.token_hex(4)}.tmp{target.suffix}"
+        name = f".{target.stem}.{os.urandom(4).hex()}.tmp{target.suffix}"
         temporary = target.with_name(name)
         try:
             descriptor = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, mode)

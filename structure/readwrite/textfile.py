@@ -34,6 +34,7 @@ from __future__ import annotations
 import io
 import os
 import stat
+import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import IO
@@ -48,11 +49,15 @@ __all__ = [
     "open_user_file",
     "opened",
     "read_text",
+    "readable_bytes",
 ]
 
 #: the largest file read unless the caller raises the limit (bytes): a 10^6-line edge list is
 #: about 26 MB and takes about 1 GB to analyse, so the default keeps a run near that
 MAX_FILE_BYTES = 32_000_000
+
+#: the most bytes read at a time (a file is read in pieces, never more than it holds)
+_CHUNK = 1 << 22
 
 #: the command-line option that raises the limit, named in the message of a file too large
 MAX_FILE_OPTION = "--max-file-size"
@@ -64,6 +69,15 @@ _KINDS = (
     (stat.S_ISBLK, "a block device"),
     (stat.S_ISSOCK, "a socket"),
 )
+
+
+def readable_bytes(max_bytes: int) -> int:
+    """``max_bytes`` as a count one read can take (a larger limit is no limit: the most).
+
+    >>> readable_bytes(10**30) == sys.maxsize - 1
+    True
+    """
+    return max(0, min(int(max_bytes), sys.maxsize - 1))
 
 
 def _kind_problem(mode: int) -> str | None:
@@ -157,8 +171,14 @@ def read_text(path: str | os.PathLike[str], max_bytes: int = MAX_FILE_BYTES) -> 
 
     At most ``max_bytes`` are read, even from a file that grows meanwhile.
     """
+    max_bytes = readable_bytes(max_bytes)
+    chunks: list[bytes] = []
+    total = 0
     with open_user_file(path, max_bytes, binary=True) as handle:
-        data = handle.read(max_bytes + 1)
+        while total <= max_bytes and (chunk := handle.read(min(_CHUNK, max_bytes + 1 - total))):
+            chunks.append(chunk)
+            total += len(chunk)
+    data = b"".join(chunks)
     problem = _size_problem(len(data), max_bytes)
     if problem is not None:
         raise _refused(path, problem)

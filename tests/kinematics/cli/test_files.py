@@ -130,6 +130,10 @@ def test_max_file_size_names_the_limit_and_raises_it(capsys, work):
     assert run(capsys, "classify", "m.edges", "--max-file-size", "1MB")[0] == 0
     code, _, err = run(capsys, "classify", "m.edges", "--max-file-size", "lots")
     assert code == 2 and "'lots' is not a size" in err
+    # a limit beyond what one read can take is no limit (was an OverflowError, exit 3)
+    huge = "9" * 30
+    assert run(capsys, "convert", "m.edges", "m.json", "--max-file-size", huge)[0] == 0
+    assert run(capsys, "classify", "m.json", "m.edges", "--max-file-size", huge)[0] == 0
 
 
 def test_atlas_writes_through_a_partial_file_that_resume_continues(capsys, work):

@@ -31,6 +31,21 @@ from ..model import Mechanism
 
 __all__ = ["Holds", "left_out", "renames"]
 
+#: what each pair option is, in the messages
+_OPTION_WORDS = {
+    "angle": "slide angles",
+    "flat": "flat faces",
+    "roller": "rollers",
+    "centers": "centres of curvature",
+    "normal": "contact normals",
+    "span": "slide spans",
+    "friction": "friction coefficients",
+    "circle": "friction circles",
+    "z": "tooth numbers",
+    "internal": "internal gears",
+    "module": "gear modules",
+}
+
 #: a list of names in a message: at most this many, then "..."
 _NAMES_SHOWN = 6
 
@@ -129,7 +144,8 @@ def left_out(
         for key, pairs in _pair_options(mechanism).items():
             if key not in holds.options:
                 plural = "s" if len(pairs) > 1 else ""
-                out.append(f"{fmt} hold no {key}=: {key}= of pair{plural} {_names(pairs)} left out")
+                what = _OPTION_WORDS.get(key, f"{key}= options")
+                out.append(f"{fmt} hold no {what}: {key}= of pair{plural} {_names(pairs)} left out")
     if not holds.exact:
         exact = [
             text for point in mechanism.points.values() for text in point.exact if text is not None

@@ -59,7 +59,7 @@ def test_every_loss_of_a_pyslvs_project_is_named(path: Path):
     for p in original.pairs_with_options():
         for key, value in (("span", p.span), ("friction", p.friction), ("circle", p.circle)):
             if value is not None:
-                assert f"hold no {key}=" in said
+                assert f"{key}= of pair" in said
     if any(e for point in original.points.values() for e in point.exact):
         assert "hold decimals only" in said
     if len(back.points) < len(original.points):

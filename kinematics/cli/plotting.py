@@ -51,12 +51,14 @@ def check_animation(path: str, fps: float) -> None:
 
     Raises
     ------
+    MechanismError
+        An extension other than .gif or .mp4 (as :func:`check_plot` says of a figure's).
     UsageError
-        An extension other than .gif or .mp4, or ``fps`` outside the format's range.
+        ``fps`` outside the format's range (exit status 2).
     """
     suffix = Path(path).suffix.lower()
     if suffix not in ANIMATION_FORMATS:
-        raise UsageError(
+        raise MechanismError(
             f"unsupported animation format {suffix or '(none)'!r} for {path}: "
             "use .gif (or .mp4 with ffmpeg)"
         )

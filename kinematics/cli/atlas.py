@@ -104,7 +104,7 @@ def _check_atlas_size(args: argparse.Namespace, counts: Sequence[int]) -> None:
 
     need = sum(chains(n) for n in counts)
     fit = _largest(args.dof, max(counts), lambda n: chains(n) * per_chain <= memory_limit())
-    ask = f"ask for at most {fit} links" if fit else "this machine has too little memory"
+    ask = f"ask for at most {fit} links" if fit else f"no chain of F = {args.dof} fits"
     check_size(
         need,
         per_chain,
@@ -133,9 +133,10 @@ def _count_too_long(counts: Sequence[int], dof: int) -> str | None:
                 dof, n, lambda k: estimated_chains(k, dof, degenerate=True)
                 * _COUNT_SECONDS_PER_CHAIN <= _COUNT_BUDGET,
             )  # fmt: skip
+            ask = f"ask for at most {fit} links" if fit else f"no chain of F = {dof} is that quick"
             return (
                 f"--count for {n} links would go through {_chain_number(chains)} chains, about "
-                f"{seconds / 86_400:.3g} CPU-days (more than one): ask for at most {fit} links"
+                f"{seconds / 86_400:.3g} CPU-days (more than one): {ask}"
             )
     return None
 
@@ -147,7 +148,7 @@ def _largest(dof: int, upto: int, fits: Callable[[int], bool]) -> int | None:
     that does not fit, however large ``upto`` is.
     """
     found = None
-    for n in range(1, upto + 1):
+    for n in range(max(2, (dof + 3) // 2), upto + 1):  # fewer links have no chain of dof
         if _has_chains(n, dof):
             if not fits(n):
                 return found

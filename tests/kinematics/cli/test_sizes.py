@@ -60,6 +60,8 @@ def test_absurd_link_counts_end_at_once(capsys):
     assert code == 1 and "CPU-days" in err
     code, _, err = run(capsys, "atlas", "--links", "18", "--count")
     assert code == 1 and "ask for at most 16 links" in err
+    code, _, err = run(capsys, "atlas", "--links", "9" * 20, "--dof", "1" + "0" * 11, "--count")
+    assert code == 1 and "no chain of F = 100000000000 is that quick" in err
     code, _, err = run(capsys, "atlas", "--links", "4-100000")
     assert code == 2 and "a range spans at most 100 link counts" in err
     assert time.monotonic() - started < 20

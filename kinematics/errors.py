@@ -11,7 +11,7 @@ returned as NaN instead.
 'group II(2,3) cannot be assembled at input 1.5: the dyad cannot close'
 >>> e.group, [float(x) for x in e.pose]
 ('II(2,3)', [1.5])
->>> from structure.errors import MechanismError
+>>> from structure.errors import MechanismError, SizeError
 >>> isinstance(e, MechanismError)
 True
 
@@ -28,7 +28,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from structure.errors import MechanismError
+from structure.errors import MechanismError, SizeError
 
 __all__ = [
     "DEAD_CENTRE",
@@ -180,7 +180,7 @@ class ExactTimeoutError(MechanismError):
         super().__init__(message)
 
 
-class SweepSizeError(MechanismError):
+class SweepSizeError(SizeError):
     """A sweep asks for more poses than fit in the memory a sweep may take."""
 
 

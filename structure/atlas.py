@@ -430,6 +430,11 @@ def completed_chains(
     order. A run resumes by cutting the file at the offset and classifying the
     tasks from that count on; the result is the table an uninterrupted run writes.
     Returns ``(0, 0)`` for a missing file.
+
+    Raises
+    ------
+    EdgeListError
+        The table is no regular file (a device, a FIFO) or cannot be read.
     """
     if not os.path.exists(path):
         return 0, 0
@@ -441,8 +446,11 @@ def completed_chains(
         if done >= len(tasks):
             break
         index, chain = tasks[done]
-        key = (int(row["links"]), int(row["chain_index"]))
-        if key != (chain.links, index) or row["chain"] != chain.code:
+        try:
+            key = (int(row["links"]), int(row["chain_index"]))
+        except (KeyError, TypeError, ValueError):
+            break  # not a row of an atlas: the rows before it are kept
+        if key != (chain.links, index) or row.get("chain") != chain.code:
             break
         count = count + 1 if key == current else 1
         current = key

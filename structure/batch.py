@@ -4,8 +4,11 @@
 every ``.edges``, ``.json`` and ``.pyslvs`` file under a directory and its subdirectories
 (sorted), the files a glob
 matches (sorted), or ``-`` for JSON lines on standard input (one mechanism per
-line: the JSON form, or an atlas row). The text of each file is read here, so the
-items can travel to another process or machine. :func:`classify_item` gives the
+line: the JSON form, or an atlas row). The text of each file is read here, when
+its item is taken, so the items can travel to another process or machine and a
+long batch holds few texts at a time. Only regular files under a size limit are
+read (:mod:`structure.readwrite.textfile`): a FIFO, a link to a device, a file too
+large is a row with its reason, skipped. :func:`classify_item` gives the
 row of one item, the same answer :func:`structure.report.analyze` gives the file
 (``W``, drivers, groups, class, formula); a file that cannot be read or analysed is
 a row with its ``error``, never the end of the run. :func:`classify_batch` maps it
@@ -33,6 +36,7 @@ from typing import IO, Any
 from .assur import roman
 from .atlas import row_mechanism
 from .errors import EdgeListError, EdgeListProblem, MechanismError, MobilityError
+from .limits import memory_text
 from .model import Mechanism
 from .parallel import ordered_map
 from .readwrite.edgelist import parse_edgelist
@@ -41,13 +45,14 @@ from .readwrite.jsonformat import mechanism_from_dict
 from .readwrite.pyslvs import looks_like_expression
 from .readwrite.reports import mobility_error_dict
 from .readwrite.table import Column
-from .readwrite.textfile import read_text
+from .readwrite.textfile import MAX_FILE_BYTES, MAX_FILE_OPTION, read_text, readable_bytes
 from .report import analyze
 from .utils import paused_gc
 
 __all__ = [
     "BATCH_COLUMNS",
     "BatchItem",
+    "batch_entries",
     "batch_items",
     "classify_batch",
     "classify_item",
@@ -72,11 +77,11 @@ class BatchItem:
     problem: str | None = None
 
 
-def _file_item(path: str) -> BatchItem:
+def _file_item(path: str, max_bytes: int = MAX_FILE_BYTES) -> BatchItem:
     suffix = Path(path).suffix.lower()
     form = suffix[1:] if suffix in (".json", ".pyslvs") else "edges"
     try:
-        text = read_text(path)
+        text = read_text(path, max_bytes)
     except EdgeListError as error:
         return BatchItem(path, "", form, str(error))
     return BatchItem(path, text, form)
@@ -94,32 +99,72 @@ def _directory_files(directory: str) -> list[str]:
     return found
 
 
-def batch_items(inputs: Sequence[str], stdin: IO[str] | None = None) -> Iterator[BatchItem]:
-    """The items named by ``inputs``, in order (see the module docstring).
+def batch_entries(inputs: Sequence[str]) -> list[tuple[str, str | None]]:
+    """Every entry ``inputs`` name, in order, as ``(path, problem)``, nothing read yet.
 
-    A name that is no file, directory or matching glob is an item with a problem.
+    A directory gives its ``.edges``, ``.json`` and ``.pyslvs`` entries (sorted,
+    sub-directories included), a glob its matches (sorted), ``-`` stands for standard input; a glob
+    that matches nothing has its problem. An entry that is no regular file (a FIFO,
+    a link to a device) is listed too: reading it gives its problem, and it is skipped.
     """
+    entries: list[tuple[str, str | None]] = []
     for name in inputs:
         if name == "-":
-            for number, line in enumerate(stdin if stdin is not None else (), start=1):
-                if line.strip():
-                    yield BatchItem(f"<stdin>:{number}", line, "line")
+            entries.append(("-", None))
         elif os.path.isdir(name):
-            for path in _directory_files(name):
-                yield _file_item(path)
-        elif os.path.exists(name):
-            yield _file_item(name)
-        elif glob.has_magic(name):
+            entries.extend((path, None) for path in _directory_files(name))
+        elif os.path.lexists(name) or not glob.has_magic(name):
+            entries.append((name, None))  # a missing file: the same error as for one file
+        else:
             matches = sorted(glob.glob(name, recursive=True))
             if not matches:
-                yield BatchItem(name, "", "edges", f"{name}: no file matches")
+                entries.append((name, f"{name}: no file matches"))
             for path in matches:
                 if os.path.isdir(path):
-                    yield from map(_file_item, _directory_files(path))
+                    entries.extend((found, None) for found in _directory_files(path))
                 else:
-                    yield _file_item(path)
+                    entries.append((path, None))
+    return entries
+
+
+def _stdin_items(stdin: IO[str] | None, max_bytes: int) -> Iterator[BatchItem]:
+    """One item per non-blank line of ``stdin``; a line longer than ``max_bytes`` is skipped."""
+    if stdin is None:
+        return
+    max_bytes = readable_bytes(max_bytes)
+    number = 0
+    while True:
+        line = stdin.readline(max_bytes + 1)
+        if not line:
+            return
+        number += 1
+        source = f"<stdin>:{number}"
+        if len(line) > max_bytes and not line.endswith("\n"):
+            while (rest := stdin.readline(max_bytes + 1)) and not rest.endswith("\n"):
+                pass  # the rest of the line, dropped piece by piece
+            reason = f"{source}: the line is longer than {memory_text(max_bytes)} (skipped; raise "
+            yield BatchItem(source, "", "line", reason + f"the limit with {MAX_FILE_OPTION})")
+        elif line.strip():
+            yield BatchItem(source, line, "line")
+
+
+def batch_items(
+    inputs: Sequence[str], stdin: IO[str] | None = None, *, max_bytes: int = MAX_FILE_BYTES
+) -> Iterator[BatchItem]:
+    """The items named by ``inputs``, in order (see :func:`batch_entries`).
+
+    Each file is read when its item is taken (regular files of at most
+    ``max_bytes`` only: :func:`~structure.readwrite.textfile.read_text`), so that
+    a long batch holds few texts at a time. A name that is no file, directory or
+    matching glob, or an entry that cannot be read, is an item with a problem.
+    """
+    for path, problem in batch_entries(inputs):
+        if problem is not None:
+            yield BatchItem(path, "", "edges", problem)
+        elif path == "-":
+            yield from _stdin_items(stdin, max_bytes)
         else:
-            yield _file_item(name)  # missing: the same error as for one file
+            yield _file_item(path, max_bytes)
 
 
 def _mechanism(item: BatchItem) -> Mechanism:
@@ -224,8 +269,6 @@ def classify_batch(
         Dask asked for but not installed.
     """
     chunk = 1 if jobs <= 1 and not (scheduler or dask_local) else 64
-    if (scheduler or dask_local) and not isinstance(items, Sequence):
-        items = list(items)  # their number sizes the Dask tasks; items are small texts
     rows = ordered_map(
         classify_item, items, jobs=jobs, scheduler=scheduler, dask_local=dask_local, chunk=chunk
     )

@@ -21,6 +21,7 @@ __all__ = [
     "MobilityError",
     "NotFiniteError",
     "NumberError",
+    "SizeError",
     "StatementError",
     "UsageError",
     "clipped",
@@ -126,6 +127,12 @@ class NumberError(StatementError):
 
 class UsageError(MechanismError):
     """An option value the command line cannot take (exit status 2, not 1)."""
+
+
+class SizeError(MechanismError):
+    """A size asked for (poses, frames, links, processes, a file) would take more memory than
+    assur may take; the message names the memory and the largest size that fits
+    (:func:`structure.limits.check_size`)."""
 
 
 class NotFiniteError(MechanismError):

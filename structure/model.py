@@ -46,6 +46,7 @@ from .validation import (
     check_driver,
     check_load,
     check_pair,
+    check_pair_point,
     check_point,
     validated,
 )
@@ -557,6 +558,8 @@ def make_pair(
     """
     given = {key: value for key, value in options.items() if value is not None} if options else {}
     kind = check_pair(kind, a, b, given, gear=gear)
+    if point is not None:
+        check_pair_point(kind, point)
     if not given and not gear:
         return Pair.plain(pair_id, kind, a, b, point, line_no=line_no)
     return Pair(pair_id, kind, a, b, point, line_no=line_no, gear=bool(gear), **_pair_fields(given))
@@ -619,7 +622,7 @@ def make_point(
     StatementError
         A coordinate that is not a finite number.
     """
-    check_point(name, x, y)
+    check_point(name, x, y, on)
     return PointDef(name, float(x), float(y), on, line_no, exact)
 
 

@@ -15,14 +15,23 @@ only when asked for, so that ``import structure`` stays light, and its absence i
 from __future__ import annotations
 
 import contextlib
-import functools
 import itertools
 import multiprocessing
+import re
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Sequence, Sized
 from typing import Any, TypeVar
 
-__all__ = ["MissingExtraError", "local_cluster", "ordered_map"]
+from .errors import MechanismError, UsageError, clipped
+
+__all__ = [
+    "SCHEDULER_FORM",
+    "Counted",
+    "MissingExtraError",
+    "check_scheduler",
+    "local_cluster",
+    "ordered_map",
+]
 
 Item = TypeVar("Item")
 Result = TypeVar("Result")
@@ -31,6 +40,9 @@ Result = TypeVar("Result")
 #: chunks in flight per Dask worker: enough that no worker waits while the client
 #: takes the results in order
 _IN_FLIGHT = 32
+
+#: chunks in flight per local worker process
+_IN_FLIGHT_LOCAL = 4
 
 #: tasks per Dask worker when the number of items is known: few large tasks (each
 #: task costs the scheduler and the network a round trip), yet enough of them that
@@ -43,6 +55,57 @@ _WORKER_WAIT = 60
 
 class MissingExtraError(ImportError):
     """An optional dependency is not installed; the message says how to install it."""
+
+
+#: the form of a Dask scheduler's address, as the messages name it
+SCHEDULER_FORM = "tcp://HOST:PORT (or tls://, ws://, wss://, ucx://; HOST:PORT means tcp://)"
+
+_SCHEDULER = re.compile(
+    r"(?:(?P<scheme>tcp|tls|ws|wss|ucx)://)?"
+    r"(?P<host>\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9](?:[A-Za-z0-9._-]{0,252}))"
+    r":(?P<port>[0-9]{1,5})/?"
+)
+
+
+def check_scheduler(address: str) -> str:
+    """The address of a Dask scheduler as given, or a UsageError naming the form expected.
+
+    >>> check_scheduler("tcp://10.0.0.5:8786")
+    'tcp://10.0.0.5:8786'
+    >>> check_scheduler("garbage")
+    Traceback (most recent call last):
+    ...
+    structure.errors.UsageError: --scheduler 'garbage' is not a Dask scheduler's address: giv...
+    """
+    found = _SCHEDULER.fullmatch(address)
+    if found is None or not 0 < int(found.group("port")) < 65536:
+        raise UsageError(
+            f"--scheduler {clipped(address)!r} is not a Dask scheduler's address: give "
+            f"{SCHEDULER_FORM}, e.g. tcp://10.0.0.5:8786"
+        )
+    return address
+
+
+class Counted(Iterable[Item]):
+    """Items taken one by one (made lazily), with their number known beforehand.
+
+    :func:`ordered_map` sizes its Dask tasks by the number of items; a lazy
+    iterable wrapped in this keeps that without making its items first.
+
+    >>> items = Counted((k * k for k in range(3)), 3)
+    >>> len(items), list(items)
+    (3, [0, 1, 4])
+    """
+
+    def __init__(self, items: Iterable[Item], length: int) -> None:
+        self._items = items
+        self._length = length
+
+    def __iter__(self) -> Iterator[Item]:
+        return iter(self._items)
+
+    def __len__(self) -> int:
+        return self._length
 
 
 def _apply_chunk(function: Callable[[Any], Any], chunk: Sequence[Any]) -> list[Any]:
@@ -93,9 +156,15 @@ def ordered_map(
         methods = multiprocessing.get_all_start_methods()
         context = multiprocessing.get_context("fork" if "fork" in methods else None)
         with context.Pool(jobs) as pool:
-            calls = pool.imap(functools.partial(_apply_chunk, function), _chunks(items, chunk))
-            for results in calls:
-                yield from results
+            # a window of chunks in flight, not ``imap`` (whose feeder takes every item at
+            # once): items made lazily (files read as they are taken) stay few in memory
+            window: deque = deque()
+            for part in _chunks(items, chunk):
+                window.append(pool.apply_async(_apply_chunk, (function, part)))
+                if len(window) >= _IN_FLIGHT_LOCAL * jobs:
+                    yield from window.popleft().get()
+            while window:
+                yield from window.popleft().get()
     else:
         for item in items:
             yield function(item)
@@ -158,7 +227,15 @@ def _dask_map(
         with local_cluster(dask_local) as address:
             yield from _dask_map(function, items, address, 0, chunk)
         return
-    client = _distributed().Client(scheduler)
+    check_scheduler(scheduler)
+    distributed = _distributed()
+    try:
+        client = distributed.Client(scheduler)
+    except (OSError, TimeoutError) as exc:
+        raise MechanismError(
+            f"cannot reach the Dask scheduler at {scheduler}: {exc}; is it running, and is "
+            "the address its own (dask scheduler prints it)?"
+        ) from exc
     try:
         workers = max(1, len(client.scheduler_info().get("workers", {})))
         window: deque = deque()

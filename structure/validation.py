@@ -28,6 +28,7 @@ from __future__ import annotations
 import itertools
 import math
 import numbers
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -53,15 +54,19 @@ __all__ = [
     "LOAD_KINDS",
     "MAX_MAGNITUDE",
     "PAIR_OPTIONS",
+    "as_title",
     "check_driver",
     "check_driver_option",
     "check_finite",
     "check_load",
     "check_magnitude",
+    "check_name",
     "check_pair",
     "check_pair_links",
     "check_pair_option",
+    "check_pair_point",
     "check_point",
+    "check_title",
     "load_kind",
     "pair_kind",
     "tooth_number",
@@ -131,6 +136,56 @@ def _is_finite(value: Any) -> bool:
         return False
 
 
+# ----------------------------------------------------------------------------- names
+#: a link or point name: one word of the edge list, which ``#`` (a comment), ``=`` (an
+#: option) and ``,`` (a list of names in an option) would cut
+_NAME = re.compile(r"[^\s#=,]+")
+
+
+def check_name(name: Any, what: str = "name") -> None:
+    """``name`` is a name the edge list holds: one word, without ``#``, ``=`` or ``,``.
+
+    Every reader builds its names through the model's builders, which ask this, so
+    a name read from JSON can be written to the edge list and read back.
+
+    >>> check_name("crank_2")
+    >>> check_name("slider block", "link")
+    Traceback (most recent call last):
+    ...
+    structure.errors.StatementError: link name 'slider block' is not one word: a name has no...
+    """
+    if not isinstance(name, str) or _NAME.fullmatch(name) is None:
+        raise StatementError(
+            f"{what} name {clipped(str(name))!r} is not one word: a name has no spaces or line "
+            "breaks, no '#', '=' or ','"
+        )
+
+
+def check_title(title: str) -> None:
+    """A mechanism's name (its title) is one line without ``#``, and no space at its ends.
+
+    >>> check_title("four-bar #2")
+    Traceback (most recent call last):
+    ...
+    structure.errors.StatementError: the name 'four-bar #2' cannot be written on a 'name' lin...
+    """
+    if "#" in title or len(title.splitlines()) > 1 or title != title.strip():
+        raise StatementError(
+            f"the name {clipped(title)!r} cannot be written on a 'name' line: one line, no '#', "
+            "no space at its ends"
+        )
+
+
+def as_title(text: str) -> str:
+    r"""``text`` (a file's stem, a name another format gave) made a name :func:`check_title`
+    takes: its spaces and line breaks one space each, no space at its ends, ``#`` as ``＃``.
+
+    >>> as_title("  four-bar\n#2 ")
+    'four-bar ＃2'
+    """
+    return " ".join(text.split()).replace("#", "\uff03")
+
+
 # ----------------------------------------------------------------------------- pairs
 _PAIR_LETTERS = {kind.value: kind for kind in PairKind}
 
@@ -193,15 +248,34 @@ def check_pair(
     """
     kind = pair_kind(kind)
     check_pair_links(a, b)
+    check_name(a, "link")
+    check_name(b, "link")
+    if a == "name":
+        raise StatementError(
+            "a pair's first link cannot be named 'name' (a line that starts with 'name' is the "
+            "title): give the links the other way round"
+        )
     if not options and not gear:
         return kind
     _check_option_keys(kind, options, gear)
     _check_pair_numbers(options)
+    for key in ("flat", "roller", "internal"):
+        if options.get(key) is not None:
+            check_name(options[key], "link")
     if "centers" in options:
         _check_centers(options["centers"])
     if gear or any(key in options for key in _GEAR_OPTIONS):
         _check_gear(a, b, options, gear)
     return kind
+
+
+def check_pair_point(kind: PairKind | str, point: str) -> None:
+    """A pair's point is a name; a higher pair's is not ``gear`` (the word of a gear mesh)."""
+    check_name(point, "point")
+    if point == "gear" and pair_kind(kind) is PairKind.H:
+        raise StatementError(
+            "a higher pair's point cannot be named 'gear' (the word that makes it a gear mesh)"
+        )
 
 
 def _check_option_keys(kind: PairKind, options: Mapping[str, Any], gear: bool) -> None:
@@ -246,6 +320,9 @@ def _check_centers(centers: Any) -> None:
         raise StatementError(
             "centers=O1,O2 names the centres of curvature on a and b (one may be empty)"
         )
+    for centre in centers:
+        if centre not in (None, ""):
+            check_name(centre, "point")
 
 
 def _is_teeth(teeth: Any) -> bool:
@@ -276,8 +353,11 @@ def _check_gear(a: str, b: str, options: Mapping[str, Any], gear: bool) -> None:
 
 
 # ------------------------------------------------------------------ points, loads, drivers
-def check_point(name: str, x: Any, y: Any) -> None:
-    """A point's coordinates are finite numbers (metres)."""
+def check_point(name: str, x: Any, y: Any, on: str | None = None) -> None:
+    """A point's name (and its link's) is a name, its coordinates finite numbers (metres)."""
+    check_name(name, "point")
+    if on is not None:
+        check_name(on, "link")
     if not (_is_finite(x) and _is_finite(y)):
         raise StatementError(
             "point coordinates must be finite numbers (metres) or exact expressions "
@@ -308,6 +388,10 @@ def check_load(
     mass and its moment of inertia are not negative.
     """
     kind = load_kind(kind)
+    if link:
+        check_name(link, "link")
+    if point is not None:
+        check_name(point, "point")
     usage = f"expected '{kind.usage}'"
     if (
         (link and not kind.takes_link)
@@ -332,7 +416,8 @@ def check_driver_option(key: str) -> None:
 
 
 def check_driver(link: str, motion: Iterable[tuple[str, Any]]) -> None:
-    """A driver's motion: known keys (:data:`DRIVER_KEYS`) with finite numbers."""
+    """A driver's link is a name; its motion known keys (:data:`DRIVER_KEYS`), finite numbers."""
+    check_name(link, "link")
     for key, value in motion:
         check_driver_option(key)
         if not _is_finite(value):

@@ -73,6 +73,16 @@ NASTY = [
     "P",
     "H",
     "x" * 200,
+    # options named like a pair's own fields (issue 22: '0 1 R a=b' was a TypeError)
+    "a=b",
+    "b=1",
+    "point=x",
+    "gear=1",
+    "line_no=2",
+    # names the edge list cannot write back, and control characters
+    "a#b",
+    "\x1b[2J",
+    "\x9b",
 ]
 
 _SETTINGS = settings(

@@ -3,12 +3,15 @@
 One row per mechanism, in the order named (a directory's files and a glob's
 matches sorted), as a text table, JSON lines, CSV or Parquet; a file that cannot
 be read or classified is a row with its error and the run goes on (exit code 1
-when any row has an error). ``-`` reads JSON lines from standard input: the JSON
-form of a mechanism, or an atlas row, per line.
+when any row has an error). An entry that is no regular file (a FIFO, a link to
+a device) or is larger than ``--max-file-size`` is not read: its row says why it
+was skipped. ``-`` reads JSON lines from standard input: the JSON form of a
+mechanism, or an atlas row, per line.
 
 :func:`run` takes parsed arguments with ``inputs`` and the table's options
 (``--format``, ``--output``, ``--jobs``, Dask: declared in :mod:`kinematics.cli.parser`);
-``classify`` hands it several inputs, a directory, a glob or ``-``.
+``classify`` hands it several inputs, a directory, a glob or ``-``. The table is
+written whole or not at all (:mod:`structure.readwrite.atomic`), never over an input.
 """
 
 from __future__ import annotations
@@ -18,14 +21,14 @@ import sys
 from collections.abc import Iterable
 from typing import IO, Any
 
-from structure.batch import BATCH_COLUMNS, batch_items, classify_batch
-from structure.parallel import MissingExtraError
+from structure.batch import BATCH_COLUMNS, batch_entries, batch_items, classify_batch
+from structure.parallel import Counted, MissingExtraError
 from structure.readwrite.table import open_table
 
-from .tables import check_run_options, open_output, progress_bar
+from .output import EXIT_MECHANISM, EXIT_OK, EXIT_USAGE, check_outputs, fail, input_limit
+from .tables import check_run_options, check_workers, open_output, progress_bar
 
 __all__ = ["format_text_table", "run"]
-
 
 
 def _one_line(text: str | None) -> str:
@@ -57,18 +60,22 @@ def format_text_table(rows: Iterable[dict[str, Any]]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _usage(message: str) -> int:
-    sys.stderr.write(f"error: {message}\n")
-    return 2
-
-
 def run(args: argparse.Namespace, stdin: IO[str] | None = None) -> int:
     """Classify ``args.inputs``; 0 when every row is classified, 1 when some has an error."""
     problem = check_run_options(args)
     if problem:
-        return _usage(problem)
-    items = list(batch_items(args.inputs, stdin if stdin is not None else sys.stdin))
-    update, close = progress_bar(len(items), "mechanism")
+        return fail(problem, EXIT_USAGE)
+    check_workers(args)
+    entries = batch_entries(args.inputs)
+    check_outputs((path for path, _ in entries if path != "-"), {"--output": args.output})
+    items: Iterable = batch_items(
+        args.inputs, stdin if stdin is not None else sys.stdin, max_bytes=input_limit(args)
+    )
+    total = None
+    if all(path != "-" for path, _ in entries):
+        total = len(entries)
+        items = Counted(items, total)
+    update, close = progress_bar(total, "mechanism")
     rows = classify_batch(
         items,
         jobs=args.jobs,
@@ -78,32 +85,20 @@ def run(args: argparse.Namespace, stdin: IO[str] | None = None) -> int:
     )
     errors = 0
     try:
-        if args.format == "text":
-            collected = list(rows)
-            close()
-            errors = sum(1 for row in collected if row["error"] is not None)
-            text = format_text_table(collected)
-            if args.output:
-                with open(args.output, "w", encoding="utf-8") as handle:
-                    handle.write(text)
+        with open_output(args.output, args.format) as handle:
+            if args.format == "text":
+                collected = list(rows)
+                close()
+                errors = sum(1 for row in collected if row["error"] is not None)
+                handle.write(format_text_table(collected))
             else:
-                sys.stdout.write(text)
-            return 1 if errors else 0
-        handle = open_output(args.output, args.format)
-        try:
-            writer = open_table(handle, args.format, BATCH_COLUMNS)
-            for row in rows:
-                errors += row["error"] is not None
-                writer.write([row])
-            writer.close()
-        finally:
-            if handle is not sys.stdout:
-                handle.close()
+                writer = open_table(handle, args.format, BATCH_COLUMNS)
+                for row in rows:
+                    errors += row["error"] is not None
+                    writer.write([row])
+                writer.close()
     except (MissingExtraError, ImportError) as exc:
-        return _usage(str(exc))
-    except OSError as exc:
-        sys.stderr.write(f"error: {exc}\n")
-        return 1
+        return fail(str(exc), EXIT_USAGE)
     finally:
         close()
-    return 1 if errors else 0
+    return EXIT_MECHANISM if errors else EXIT_OK

@@ -21,7 +21,17 @@ from structure.readwrite.reports import (
 )
 from structure.report import all_driver_choices, analyze
 
-from .output import EXIT_MECHANISM, EXIT_OK, failed, print_json
+from .output import (
+    EXIT_MECHANISM,
+    EXIT_OK,
+    check_outputs,
+    escaped,
+    failed,
+    input_limit,
+    print_json,
+    printable,
+    write_stdout,
+)
 from .plotting import check_plot, load_drawing
 
 __all__ = ["run_classify"]
@@ -48,9 +58,10 @@ def run_classify(args: argparse.Namespace) -> int:
     if _is_batch(args):
         args.inputs = [args.file, *args.more]
         return importlib.import_module(f"{__package__}.batch").run(args)
+    check_outputs([args.file], {"--plot": args.plot})
     try:
         check_plot(args.plot)
-        report = analyze(read_edgelist(args.file), args.driver)
+        report = analyze(read_edgelist(args.file, input_limit(args)), args.driver)
         choices = all_driver_choices(report) if args.all_drivers else ()
         if args.plot:
             load_drawing().save_structure_sheet(report, args.plot)
@@ -58,14 +69,14 @@ def run_classify(args: argparse.Namespace) -> int:
         if args.json:
             print_json(mobility_error_dict(exc))
         else:
-            sys.stderr.write(format_mobility_error(exc))
+            sys.stderr.write(printable(format_mobility_error(exc)))
         return EXIT_MECHANISM
     except MechanismError as exc:
         return failed(exc, args.json)
     if args.json:
-        write_report_json(report, sys.stdout, choices)
+        write_report_json(report, escaped(sys.stdout, json_text=True), choices)
     elif args.explain:
-        sys.stdout.write(explain_structure(report, args.lang, args.explain))
+        write_stdout(explain_structure(report, args.lang, args.explain))
     else:
-        sys.stdout.write(format_report(report, choices))
+        write_stdout(format_report(report, choices))
     return EXIT_OK

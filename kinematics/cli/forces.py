@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import sys
 from typing import TYPE_CHECKING
 
 from structure.errors import MechanismError
@@ -19,7 +18,19 @@ from ..kinetostatics.forces import solve_forces
 from ..results.serialization import exact_forces_to_dict, forces_to_dict
 from ..solvers.exact import EXACT_TIMEOUT, forces_exact
 from ..solvers.plan import make_plan
-from .output import EXIT_OK, check_finite, failed, print_json, title_lines, vector, write_lines
+from .output import (
+    EXIT_OK,
+    check_finite,
+    check_outputs,
+    failed,
+    input_limit,
+    note,
+    print_json,
+    title_lines,
+    vector,
+    write_lines,
+    write_stdout,
+)
 from .plotting import check_plot, load_drawing
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
@@ -33,9 +44,10 @@ __all__ = ["run_forces"]
 
 def run_forces(args: argparse.Namespace) -> int:
     """Solve the joint reactions of ``args.file`` at its sketch pose; returns the exit code."""
+    check_outputs([args.file], {"--plot": args.plot})
     try:
         check_plot(args.plot)
-        report = analyze(read_edgelist(args.file))
+        report = analyze(read_edgelist(args.file, input_limit(args)))
         if args.plot:
             plan = make_plan(report)
             numeric = solve_forces(plan, minimum_norm=args.minimum_norm)
@@ -50,7 +62,7 @@ def run_forces(args: argparse.Namespace) -> int:
         print_json(forces_to_dict(result))
     elif args.explain:
         plan = make_plan(report)
-        sys.stdout.write(explain_forces(report, plan, result, args.lang, args.explain))
+        write_stdout(explain_forces(report, plan, result, args.lang, args.explain))
     else:
         write_lines(_forces_lines(report, result))
     return EXIT_OK
@@ -97,8 +109,8 @@ def _print_exact_forces(
     Nothing is printed before the whole answer is known (a time limit leaves no half answer).
     """
     result = forces_exact(plan, timeout=EXACT_TIMEOUT if timeout is None else timeout)
-    for note in result.approximations:  # what is not exact, on stderr
-        sys.stderr.write(f"note: {note}\n")
+    for approximation in result.approximations:  # what is not exact, on stderr
+        note(approximation)
     if as_json:
         print_json(exact_forces_to_dict(result))
         return EXIT_OK

@@ -25,7 +25,7 @@ from ..gears.trains import (
     train_forces,
     train_losses,
 )
-from .output import EXIT_OK, check_finite, failed, print_json, write_lines
+from .output import EXIT_OK, check_finite, failed, input_limit, print_json, write_lines
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.model import Mechanism
@@ -78,7 +78,7 @@ def run_gears(args: argparse.Namespace) -> int:
     if args.efficiency is not None and not 0 < args.efficiency <= 1:
         raise UsageError("--efficiency is the efficiency of each mesh, a number in (0, 1]")
     try:
-        answer = _solve_train(read_edgelist(args.file), args.efficiency)
+        answer = _solve_train(read_edgelist(args.file, input_limit(args)), args.efficiency)
         check_finite(_train_dict(answer))
     except MechanismError as exc:
         return failed(exc, args.json)

@@ -24,10 +24,13 @@ from structure.errors import MechanismError, UsageError, clipped
 from .output import EXIT_BUG, EXIT_OK, EXIT_USAGE, fail, failed
 from .parser import build_parser
 
-__all__ = ["DEBUG_VARIABLE", "RUNNERS", "main"]
+__all__ = ["DEBUG_VARIABLE", "EXIT_INTERRUPTED", "RUNNERS", "main"]
 
 #: the environment variable that, set (and not 0), adds the traceback of a bug to its error line
 DEBUG_VARIABLE = "ASSUR_DEBUG"
+
+#: the exit code of a run stopped by Ctrl-C (128 + SIGINT, as a shell reports it)
+EXIT_INTERRUPTED = 130
 
 #: command -> (module of this package, its function that runs the command and gives the exit code);
 #: the module is imported only when its command runs, so ``assur classify`` starts without the
@@ -82,6 +85,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return run(args)
     except BrokenPipeError:
         return _output_closed()
+    except KeyboardInterrupt:  # Ctrl-C: a line, no traceback, no half-written file
+        return fail("interrupted", EXIT_INTERRUPTED)
     except UsageError as exc:
         return fail(str(exc), EXIT_USAGE)
     except MechanismError as exc:  # one the command did not catch: still no traceback

@@ -8,12 +8,12 @@ from __future__ import annotations
 
 import argparse
 import math
-import sys
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from structure.errors import MechanismError
+from structure.readwrite.atomic import atomic_path, write_text
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
@@ -30,14 +30,18 @@ from .output import (
     EXIT_OK,
     EXIT_USAGE,
     check_finite,
+    check_outputs,
     fail,
     failed,
+    input_limit,
+    note,
     print_json,
     title_lines,
     vector,
     write_lines,
+    write_stdout,
 )
-from .plotting import check_plot, load_drawing
+from .plotting import check_animation, check_plot, load_drawing
 
 if TYPE_CHECKING:  # pragma: no cover - annotations only
     from structure.report import StructuralReport
@@ -58,8 +62,9 @@ def run_kinematics(args: argparse.Namespace) -> int:
             "the sketch's, whose coordinates are not exact: leave out one of them",
             EXIT_USAGE,
         )
+    check_outputs([args.file], {"--plot": args.plot})
     try:
-        report = analyze(read_edgelist(args.file))
+        report = analyze(read_edgelist(args.file, input_limit(args)))
         plan = make_plan(report, flip=args.flip)
         if args.modes:
             return _print_modes(report, plan, args.json)
@@ -77,7 +82,7 @@ def run_kinematics(args: argparse.Namespace) -> int:
     if args.json:
         print_json(state_to_dict(state))
     elif args.explain:
-        sys.stdout.write(explain_kinematics(report, plan, state, args.lang, args.explain))
+        write_stdout(explain_kinematics(report, plan, state, args.lang, args.explain))
     else:
         write_lines(_kinematics_lines(report, plan, state))
     return EXIT_OK
@@ -160,8 +165,8 @@ def _print_exact(
     Nothing is printed before the whole answer is known (a time limit leaves no half answer).
     """
     state = solve_exact(plan, timeout=EXACT_TIMEOUT if timeout is None else timeout)
-    for note in state.approximations:  # what is not exact, on stderr
-        sys.stderr.write(f"note: {note}\n")
+    for approximation in state.approximations:  # what is not exact, on stderr
+        note(approximation)
     if as_json:
         print_json(exact_to_dict(state))
         return EXIT_OK
@@ -180,24 +185,21 @@ def run_sweep(args: argparse.Namespace) -> int:
     """Solve ``args.steps`` poses over a turn (or the ``--inputs`` poses); returns the exit code."""
     if args.steps < 1:
         return fail("--steps must be at least 1", EXIT_USAGE)
+    check_outputs([args.file, args.inputs], {"--csv": args.csv, "--plot": args.plot})
     try:
         check_plot(args.plot)
-        plan = make_plan(analyze(read_edgelist(args.file)))
-        inputs = read_inputs(args.inputs, plan) if args.inputs else None
+        plan = make_plan(analyze(read_edgelist(args.file, input_limit(args))))
+        inputs = read_inputs(args.inputs, plan, input_limit(args)) if args.inputs else None
         result = sweep(plan, inputs, steps=args.steps)
         check_finite(result.as_dict())
         if args.plot:
             load_drawing().save_sweep_figure(result, plan, args.plot)
         out = _sweep_lines(args, plan, result)  # the ranges and balancing, computed when read
+        if args.csv:
+            write_text(args.csv, result.to_csv())
+            out.append(f"wrote {args.csv}")
     except MechanismError as exc:
         return fail(str(exc))
-    if args.csv:
-        try:
-            with open(args.csv, "w", encoding="utf-8") as handle:
-                handle.write(result.to_csv())
-        except OSError as exc:
-            return fail(f"cannot write {args.csv}: {exc.strerror or exc}")
-        out.append(f"wrote {args.csv}")
     write_lines(out)
     return EXIT_OK
 
@@ -258,27 +260,30 @@ def _sweep_lines(args: argparse.Namespace, plan: SolvePlan, result: Sweep) -> li
 
 def run_animate(args: argparse.Namespace) -> int:
     """Write an animation of the mechanism over a turn to ``args.out``; returns the exit code."""
-    if args.steps < 1 or not args.fps > 0:
-        return fail("--steps must be at least 1 and --fps positive", EXIT_USAGE)
+    if args.steps < 1:
+        return fail("--steps must be at least 1", EXIT_USAGE)
+    check_outputs([args.file, args.inputs], {"OUT": args.out})
+    check_animation(args.out, args.fps)
     try:
         drawing = load_drawing("animate")
-        report = analyze(read_edgelist(args.file))
+        report = analyze(read_edgelist(args.file, input_limit(args)))
         plan = make_plan(report)
         notes = []
         if args.inputs:
-            inputs = read_inputs(args.inputs, plan)
+            inputs = read_inputs(args.inputs, plan, input_limit(args))
         else:
+            drawing.check_frames(args.steps, plan)
             way = travel(plan, args.steps)
             inputs = way.inputs
             if not way.complete:
                 inputs = drawing.there_and_back(inputs)
                 notes.append(_stretch_note(plan, way))
-        drawing.animate(report, plan, inputs, args.out, fps=args.fps)
+        drawing.check_frames(len(inputs), plan)
+        with atomic_path(args.out) as temporary:
+            drawing.animate(report, plan, inputs, temporary, fps=args.fps)
     except MechanismError as exc:
         return fail(str(exc))
-    except OSError as exc:
-        return fail(f"cannot write {args.out}: {exc.strerror or exc}")
-    sys.stdout.write(f"wrote {args.out}: {len(inputs)} frames at {args.fps:g} frames/s\n")
+    write_stdout(f"wrote {args.out}: {len(inputs)} frames at {args.fps:g} frames/s\n")
     if notes:
         write_lines(notes)
     return EXIT_OK

@@ -10,15 +10,26 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 from collections.abc import Callable
 
 from structure.explain.document import FORMATS, LANGUAGES
+from structure.limits import memory_text
 from structure.readwrite.formats import WRITE_SUFFIXES
 from structure.readwrite.table import TABLE_FORMATS
+from structure.readwrite.textfile import MAX_FILE_BYTES, MAX_FILE_OPTION
 
 from .plotting import PLOT_FORMATS
 
-__all__ = ["BATCH_FORMATS", "COMMANDS", "DRAWING_SUFFIXES", "SWEEP_SUFFIXES", "build_parser"]
+__all__ = [
+    "BATCH_FORMATS",
+    "COMMANDS",
+    "DRAWING_SUFFIXES",
+    "SWEEP_SUFFIXES",
+    "add_max_file_size",
+    "build_parser",
+    "file_size",
+]
 
 _DESCRIPTION = (
     "Planar mechanisms by Assur groups: structure, kinematics, forces, gear "
@@ -29,9 +40,41 @@ _COORDINATES_FILE = "edge-list file with point coordinates and driver motion"
 
 
 # ------------------------------------------------------------------ shared options
+_SIZE_UNITS = {"": 1, "k": 10**3, "m": 10**6, "g": 10**9, "t": 10**12}
+_SIZE = re.compile(r"\s*(\d+(?:\.\d*)?|\.\d+)\s*([kmgt]?)b?\s*", re.IGNORECASE)
+
+
+def file_size(text: str) -> int:
+    """A size in bytes as ``--max-file-size`` takes it: ``200MB``, ``1.5G``, ``64000000``.
+
+    >>> file_size("200MB"), file_size("1.5g"), file_size("4096")
+    (200000000, 1500000000, 4096)
+    """
+    found = _SIZE.fullmatch(text)
+    size = int(float(found.group(1)) * _SIZE_UNITS[found.group(2).lower()]) if found else 0
+    if size < 1:
+        raise argparse.ArgumentTypeError(
+            f"{text!r} is not a size: give bytes, or kB, MB, GB (e.g. 200MB)"
+        )
+    return size
+
+
+def add_max_file_size(command: argparse.ArgumentParser) -> None:
+    """``--max-file-size SIZE``: the largest file the command reads (every command that reads)."""
+    command.add_argument(
+        MAX_FILE_OPTION,
+        type=file_size,
+        default=MAX_FILE_BYTES,
+        metavar="SIZE",
+        help=f"read files of at most SIZE (default {memory_text(MAX_FILE_BYTES)}; e.g. 200MB); "
+        "only regular files are read",
+    )
+
+
 def _add_file(command: argparse.ArgumentParser, holds: str) -> None:
-    """The FILE argument: the mechanism to read; ``holds`` says what the file must hold."""
+    """The FILE argument: the mechanism to read (``holds`` says what it must hold); its limit."""
     command.add_argument("file", help=holds)
+    add_max_file_size(command)
 
 
 def _add_json(command: argparse.ArgumentParser) -> None:
@@ -241,6 +284,7 @@ def _convert_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "file", metavar="IN", help="mechanism: .edges, .json (ours or pylinkage's), .pyslvs"
     )
+    add_max_file_size(parser)
     parser.add_argument(
         "out",
         metavar="OUT",

@@ -12,12 +12,23 @@ import importlib
 from pathlib import Path
 from types import ModuleType
 
-from structure.errors import MechanismError
+from structure.errors import MechanismError, UsageError
 
-__all__ = ["PLOT_FORMATS", "check_plot", "load_drawing"]
+__all__ = [
+    "ANIMATION_FORMATS",
+    "PLOT_FORMATS",
+    "check_animation",
+    "check_plot",
+    "load_drawing",
+]
 
 #: the figure formats ``--plot`` writes, by file suffix
 PLOT_FORMATS = (".png", ".svg", ".pdf")
+
+#: the animation formats, by file suffix, with the frame rates each can play (frames/s): a
+#: GIF's frame delay is a whole number of hundredths of a second, at most 655.35 s, and
+#: viewers slow delays under 0.02 s down to 0.1 s
+ANIMATION_FORMATS = {".gif": (1 / 655.35, 50.0), ".mp4": (0.01, 240.0)}
 
 
 def check_plot(path: str | None) -> None:
@@ -33,6 +44,31 @@ def check_plot(path: str | None) -> None:
             f"cannot plot to {path}: unsupported figure format "
             f"{Path(path).suffix or '(none)'!r}, use .png, .svg or .pdf"
         )
+
+
+def check_animation(path: str, fps: float) -> None:
+    """Refuse an animation of an unknown format, or a frame rate it cannot play, before work.
+
+    Raises
+    ------
+    MechanismError
+        An extension other than .gif or .mp4 (as :func:`check_plot` says of a figure's).
+    UsageError
+        ``fps`` outside the format's range (exit status 2).
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix not in ANIMATION_FORMATS:
+        raise MechanismError(
+            f"unsupported animation format {suffix or '(none)'!r} for {path}: "
+            "use .gif (or .mp4 with ffmpeg)"
+        )
+    low, high = ANIMATION_FORMATS[suffix]
+    if not low <= fps <= high:
+        raise UsageError(
+            f"--fps {fps:g}: a {suffix[1:].upper()} plays {low:.3g} to {high:g} frames per "
+            "second" + (" (its frame delays are whole hundredths of a second)"
+                        if suffix == ".gif" else "")
+        )  # fmt: skip
 
 
 def load_drawing(needs: str = "--plot") -> ModuleType:

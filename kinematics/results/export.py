@@ -13,9 +13,20 @@ colour each group:
   (the last solved of its links), a slider block a closed ``LWPOLYLINE``
   rectangle on its link's layer, its guide a ``LINE`` on the guide link's;
 * the ground under a fixed pivot or along a fixed guide is a base ``LINE``
-  with short hatch strokes (``LINE`` entities) on ``GROUND``.
+  with short hatch strokes (``LINE`` entities) on ``GROUND``;
+* a gear mesh's pitch circles (radius m·z/2 with ``module=``, else the axis to
+  the contact) are ``CIRCLE`` entities on ``PITCH_CIRCLES``, each gear's tooth
+  number a ``TEXT`` (``z = 20``) on ``TOOTH_NUMBERS``;
+* a cam's profile at the contact (its disc: the circle about its centre of
+  curvature through the contact), a roller and a flat face are ``CIRCLE`` and
+  ``LINE`` entities on ``CAM_PROFILES``;
+* the mechanism's name is a ``TEXT`` above the drawing on ``LABELS``, and every
+  named point not drawn otherwise a ``POINT`` with its name.
 
-Coordinates are the pose's, in the units of the sketch (metres).
+Coordinates are the pose's, in the units of the sketch (metres). A drawing holds
+no loads, driver motion, friction or other physics (:data:`DXF_HOLDS`;
+:func:`dxf_left_out` says what a mechanism loses, a line per kind). Files are
+written whole or not at all (:mod:`structure.readwrite.atomic`).
 
 :func:`write_parquet` writes a :class:`~kinematics.solvers.sweep.Sweep` as a Parquet
 table (pyarrow, the ``parquet`` extra) with the columns of
@@ -38,7 +49,9 @@ from typing import Any
 import numpy as np
 
 from structure.errors import MechanismError
-from structure.model import Pair, PairKind
+from structure.model import Mechanism, Pair, PairKind
+from structure.readwrite.atomic import atomic_path
+from structure.readwrite.omissions import Holds, left_out
 from structure.report import StructuralReport
 
 from ..solvers.plan import SolvePlan
@@ -56,10 +69,17 @@ except ImportError:  # pragma: no cover - depends on the environment
     pyarrow = None
 
 __all__ = [
+    "CAM_LAYER",
+    "DRAWING_HOLDS",
+    "DXF_HOLDS",
     "GROUND_LAYER",
     "LABEL_LAYER",
     "OTHER_LAYER",
+    "PITCH_LAYER",
+    "TEETH_LAYER",
+    "drawing_left_out",
     "dxf_layers",
+    "dxf_left_out",
     "mechanism_dxf",
     "write_dxf",
     "write_parquet",
@@ -68,6 +88,37 @@ __all__ = [
 GROUND_LAYER = "GROUND"
 LABEL_LAYER = "LABELS"
 OTHER_LAYER = "OTHER"
+PITCH_LAYER = "PITCH_CIRCLES"
+TEETH_LAYER = "TOOTH_NUMBERS"
+CAM_LAYER = "CAM_PROFILES"
+
+#: the pair options a drawing at a pose shows (the geometry); the others are physics
+_DRAWN_OPTIONS = frozenset({"angle", "flat", "roller", "centers", "z", "module", "internal"})
+
+#: what a DXF drawing keeps of a mechanism: its geometry at a pose, names and tooth numbers
+DXF_HOLDS = Holds("DXF drawings", loads=False, motion=False, options=_DRAWN_OPTIONS)
+
+#: what a figure (SVG, PNG, PDF) of the mechanism keeps: as DXF, but no tooth numbers
+DRAWING_HOLDS = Holds(
+    "SVG, PNG and PDF drawings", loads=False, motion=False, options=_DRAWN_OPTIONS - {"z"}
+)
+
+
+def dxf_left_out(mechanism: Mechanism) -> tuple[str, ...]:
+    """What a DXF drawing of ``mechanism`` leaves out (loads, motion, physics), a line per kind.
+
+    >>> from structure import parse_edgelist
+    >>> dxf_left_out(parse_edgelist(["driver 1 omega=5", "0 1 R A", "point A 0 0"]))
+    ('DXF drawings hold no driver motion: omega of driver 1 left out',)
+    """
+    return left_out(mechanism, DXF_HOLDS)
+
+
+def drawing_left_out(mechanism: Mechanism) -> tuple[str, ...]:
+    """What an SVG, PNG or PDF drawing of ``mechanism`` leaves out, a line per kind."""
+    return left_out(mechanism, DRAWING_HOLDS)
+
+
 _FORBIDDEN = re.compile(r'[<>/\\":;?*|=`]')
 #: AutoCAD colour index of each group's layer, in solve order (drivers are white/black)
 _COLOURS = (5, 30, 3, 1, 6, 42, 4, 2, 8)
@@ -189,13 +240,39 @@ class _Sheet:
             colour = colour or _COLOURS[k % len(_COLOURS)]
             self.doc.layers.add(name, color=colour)
         self.size = float(plan.length or 1.0)
+        self.low = np.array([math.inf, math.inf])
+        self.high = -self.low
+
+    def _extend(self, *points: Any) -> None:
+        for point in points:
+            xy = np.asarray(point, dtype=float)
+            self.low, self.high = np.minimum(self.low, xy), np.maximum(self.high, xy)
+
+    def layer(self, name: str, colour: int) -> str:
+        """``name``, a layer added the first time it is used."""
+        if name not in self.doc.layers:
+            self.doc.layers.add(name, color=colour)
+        return name
 
     def line(self, layer: str, start: np.ndarray, end: np.ndarray, dashed: bool = False) -> None:
         attribs = {"layer": layer, "linetype": "DASHED"} if dashed else {"layer": layer}
+        self._extend(start, end)
         self.msp.add_line(tuple(map(float, start)), tuple(map(float, end)), dxfattribs=attribs)
+
+    def circle(self, layer: str, centre: np.ndarray, radius: float, dashed: bool = False) -> None:
+        attribs = {"layer": layer, "linetype": "DASHED"} if dashed else {"layer": layer}
+        self._extend(centre - radius, centre + radius)
+        self.msp.add_circle(tuple(map(float, centre)), float(radius), dxfattribs=attribs)
+
+    def text(self, layer: str, text: str, at: np.ndarray, height: float) -> None:
+        self._extend(at)
+        self.msp.add_text(text, height=height, dxfattribs={"layer": layer}).set_placement(
+            (float(at[0]), float(at[1]))
+        )
 
     def ring(self, layer: str, points: list[np.ndarray], dashed: bool = False) -> None:
         attribs = {"layer": layer, "linetype": "DASHED"} if dashed else {"layer": layer}
+        self._extend(*points)
         xy = [(float(p[0]), float(p[1])) for p in points]
         self.msp.add_lwpolyline(xy, close=True, dxfattribs=attribs)
 
@@ -275,6 +352,99 @@ def _draw_sliders(sheet: _Sheet, plan: SolvePlan, pose: _Pose) -> None:
             sheet.hatch(on_guide - reach + below, on_guide + reach + below, below)
 
 
+def _pin_axis(m: Mechanism, link: str, near: np.ndarray | None, radius: float | None):
+    """The sketch point of ``link``'s axle: the pin to the ground (else its first), or the pin
+    whose distance to the contact ``near`` is the pitch radius when that is known."""
+    pins = [
+        np.asarray(m.coordinates(q.point), dtype=float)
+        for q in m.pairs_of(link)
+        if q.kind is PairKind.R and q.point is not None and m.coordinates(q.point) is not None
+    ]
+    if not pins:
+        return None
+    if radius is not None and near is not None:
+        return min(pins, key=lambda c: abs(float(np.hypot(*(c - near))) - radius))
+    grounded = [
+        np.asarray(m.coordinates(q.point), dtype=float)
+        for q in m.pairs_of(link)
+        if q.kind is PairKind.R and q.other(link) == m.ground and m.coordinates(q.point)
+    ]
+    return (grounded or pins)[0]
+
+
+def _draw_gear(sheet: _Sheet, m: Mechanism, pair: Pair, pose: _Pose) -> None:
+    """The pitch circle and tooth number of each gear of a mesh (not of the frame's)."""
+    contact = pose.sketch(pair.point)
+    teeth = pair.teeth or (None, None)
+    pitch = sheet.layer(PITCH_LAYER, 4)
+    numbers = sheet.layer(TEETH_LAYER, 7)
+    for link, z in zip((pair.a, pair.b), teeth, strict=True):
+        known = pair.module * z / 2 if pair.module and z else None
+        if link == m.ground and known is None:
+            continue  # which pivot of the frame is the gear's axle is not known
+        axis = _pin_axis(m, link, contact, known)
+        if axis is None:
+            continue
+        radius = (
+            known
+            if known is not None
+            else (float(np.hypot(*(axis - contact))) if contact is not None else 0.0)
+        )
+        if not radius > 0:
+            continue
+        centre = pose.place(link, axis)
+        sheet.circle(pitch, centre, radius, dashed=True)
+        label = f"z = {'?' if z is None else z}"
+        corner = centre + radius * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+        sheet.text(numbers, label, corner, 0.03 * sheet.size)
+
+
+def _draw_cam(sheet: _Sheet, report: StructuralReport, pair: Pair, pose: _Pose) -> None:
+    """A cam contact's profiles: the disc (a circle through the contact about its centre of
+    curvature), the roller, the flat face."""
+    contact = pose.sketch(pair.point)
+    if contact is None:
+        return
+    layer = sheet.layer(CAM_LAYER, 6)
+    found = next((r for r in report.replacements if r.pair.id == pair.id), None)
+    for link in (pair.a, pair.b):
+        if found is not None and found.roller is not None and link == found.roller.roller:
+            axis = pose.sketch(found.roller.axis)
+            if axis is not None:
+                radius = float(np.hypot(*(axis - contact)))
+                sheet.circle(layer, pose.place(found.roller.follower, axis), radius)
+            continue
+        if pair.flat == link:
+            face = None
+            if found is not None:
+                face = next((q.angle for q in found.new_pairs if q.kind is PairKind.P), None)
+            if face is None and pair.normal_deg is not None:
+                face = math.radians(pair.normal_deg) + math.pi / 2
+            if face is not None:
+                along = 0.18 * sheet.size * np.array([math.cos(face), math.sin(face)])
+                sheet.line(
+                    layer, pose.place(link, contact - along), pose.place(link, contact + along)
+                )
+            continue
+        centre = pose.sketch(pair.center_of(link))
+        if centre is None:
+            continue
+        radius = float(np.hypot(*(centre - contact)))
+        if radius > 1e-9 * sheet.size:  # a knife edge has no circle: the contact is its profile
+            sheet.circle(layer, pose.place(link, centre), radius)
+
+
+def _draw_higher_pairs(sheet: _Sheet, report: StructuralReport, pose: _Pose) -> None:
+    m = report.mechanism
+    for pair in m.pairs:
+        if pair.kind is not PairKind.H:
+            continue
+        if pair.gear:
+            _draw_gear(sheet, m, pair, pose)
+        else:
+            _draw_cam(sheet, report, pair, pose)
+
+
 def mechanism_dxf(report: StructuralReport, plan: SolvePlan, state: KinematicState) -> Any:
     """The mechanism at ``state``'s pose as an ezdxf drawing (see the module for its layers).
 
@@ -289,23 +459,39 @@ def mechanism_dxf(report: StructuralReport, plan: SolvePlan, state: KinematicSta
     pose = _Pose(plan, state)
     _draw_links(sheet, plan, pose)
     _draw_sliders(sheet, plan, pose)
-    _draw_pins(sheet, report, plan, pose)
+    drawn = set(_draw_pins(sheet, report, plan, pose))
+    _draw_higher_pairs(sheet, report, pose)
+    mechanism = plan.mechanism
+    height = 0.02 * sheet.size
     for name, point in state.points.items():
-        definition = plan.mechanism.points.get(name)
+        definition = mechanism.points.get(name)
         if definition is not None and definition.on is not None:
+            drawn.add(name)
             sheet.msp.add_point(
                 tuple(map(float, point.position)), dxfattribs={"layer": sheet.layers[point.link]}
             )
-            sheet.msp.add_text(
-                name, height=0.02 * sheet.size, dxfattribs={"layer": LABEL_LAYER}
-            ).set_placement(tuple(map(float, point.position)))
+            sheet.text(LABEL_LAYER, name, np.asarray(point.position, dtype=float), height)
+    for name, definition in mechanism.points.items():
+        if name in drawn:
+            continue  # a pin's name is written by its circle, a marker's by its point
+        link = definition.on or mechanism.ground
+        at = pose.place(link, (definition.x, definition.y)) if link in pose.q else None
+        if at is None:
+            at = np.array([definition.x, definition.y])
+        sheet.msp.add_point(tuple(map(float, at)), dxfattribs={"layer": LABEL_LAYER})
+        sheet.text(LABEL_LAYER, name, at, height)
+    if mechanism.name and np.all(np.isfinite(sheet.low)):
+        top_left = np.array([sheet.low[0], sheet.high[1] + 0.08 * sheet.size])
+        sheet.text(LABEL_LAYER, mechanism.name, top_left, 0.04 * sheet.size)
     return sheet.doc
 
 
 def write_dxf(
     report: StructuralReport, plan: SolvePlan, state: KinematicState, path: str | os.PathLike[str]
 ) -> Path:
-    """Write :func:`mechanism_dxf` to ``path``.
+    """Write :func:`mechanism_dxf` to ``path``, whole or not at all.
+
+    What the drawing leaves out of the mechanism is not said here: ask :func:`dxf_left_out`.
 
     Raises
     ------
@@ -313,16 +499,15 @@ def write_dxf(
         ezdxf is not installed, or the file cannot be written.
     """
     doc = mechanism_dxf(report, plan, state)
-    path = Path(path)
-    try:
-        doc.saveas(path)
-    except OSError as exc:
-        raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
-    return path
+    with atomic_path(path) as temporary:
+        doc.saveas(temporary)
+    return Path(path)
 
 
 def write_parquet(result: Sweep, path: str | os.PathLike[str]) -> Path:
     """Write a sweep as a Parquet table: one row per pose, the columns of ``Sweep.as_dict``.
+
+    The file is written whole or not at all.
 
     Raises
     ------
@@ -335,9 +520,6 @@ def write_parquet(result: Sweep, path: str | os.PathLike[str]) -> Path:
     table = pyarrow.table(
         {name: np.asarray(values, dtype=float) for name, values in columns.items()}
     )
-    path = Path(path)
-    try:
-        pyarrow.parquet.write_table(table, path)
-    except OSError as exc:
-        raise MechanismError(f"cannot write {path}: {exc}") from exc
-    return path
+    with atomic_path(path) as temporary:
+        pyarrow.parquet.write_table(table, temporary)
+    return Path(path)

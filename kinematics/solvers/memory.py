@@ -16,7 +16,7 @@ True
 
 from __future__ import annotations
 
-import os
+from structure.limits import check_size, memory_limit
 
 from ..errors import SweepSizeError
 from .plan import SolvePlan
@@ -28,15 +28,7 @@ __all__ = ["BYTES_PER_POSE_ITEM", "check_poses", "memory_limit", "pose_bytes"]
 BYTES_PER_POSE_ITEM = 320
 
 
-def memory_limit() -> int:
-    """The memory a sweep may take: half of this machine's (4 GiB where it cannot be read)."""
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
-    except (ValueError, OSError, AttributeError):  # pragma: no cover - platform
-        return 4 * 2**30
-
-
-def pose_bytes(plan: SolvePlan, rates: bool) -> int:
+def pose_bytes(plan: SolvePlan, rates: bool = True) -> int:
     """The memory one pose of ``plan`` takes, with rates or positions only."""
     items = len(plan.points) + len(plan.mechanism.moving_links)
     return BYTES_PER_POSE_ITEM * max(items, 1) // (1 if rates else 3)
@@ -48,22 +40,20 @@ def check_poses(
     """Refuse ``poses`` poses of ``plan`` when they would not fit in :func:`memory_limit`.
 
     ``what`` names the poses in the message (default: a sweep of them),
-    ``advice`` what to change (default: fewer steps).
+    ``advice`` what to change (default: fewer steps); the message is
+    :func:`structure.limits.check_size`'s, as for every option that sets a size.
 
     Raises
     ------
     SweepSizeError
         Naming the poses, the memory they would take and the limit.
     """
-    per_pose = pose_bytes(plan, rates)
-    limit = memory_limit()
-    if poses * per_pose > limit:
-        what = what or f"a sweep of {poses} poses"
-        advice = advice or (
-            f"ask for at most {limit // per_pose} poses (steps=, --steps on the "
-            "command line), or sweep the inputs in parts"
-        )
-        raise SweepSizeError(
-            f"{what} would take about {poses * per_pose / 1e9:.3g} GB of memory, more than "
-            f"the {limit / 1e9:.3g} GB a sweep may take (half of this machine's): {advice}"
-        )
+    check_size(
+        poses,
+        pose_bytes(plan, rates),
+        what or f"a sweep of {poses} poses",
+        advice
+        or "ask for at most {fit} poses (steps=, --steps on the command line), or sweep the "
+        "inputs in parts",
+        error=SweepSizeError,
+    )

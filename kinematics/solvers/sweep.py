@@ -26,11 +26,12 @@ from functools import partial
 import numpy as np
 
 from structure.errors import EdgeListError, EdgeListProblem
+from structure.readwrite.textfile import MAX_FILE_BYTES, open_user_file
 
 from ..kinetostatics.forces import forces_over
 from ..results.state import Motion
 from .dyads import PointLayout, laid_out
-from .memory import BYTES_PER_POSE_ITEM, check_poses, memory_limit
+from .memory import BYTES_PER_POSE_ITEM, check_poses, memory_limit, pose_bytes
 from .plan import SolvePlan
 from .planar import cross, norm, rotate_many, units
 from .solve import solve_poses
@@ -247,9 +248,9 @@ def sweep(
     return Sweep(inputs, links, points, transmission, balancing)
 
 
-def _check_size(plan: SolvePlan, poses: int, rates: bool) -> None:
-    """Refuse a sweep whose results would not fit in the memory a sweep may take."""
-    check_poses(plan, poses, rates)
+def _check_size(plan: SolvePlan, poses: int, rates: bool, what: str = "") -> None:
+    """Refuse a sweep whose results would not fit in the memory a run may take."""
+    check_poses(plan, poses, rates, what=what)
 
 
 def _link_column(motion: Motion, link: str, key: str) -> np.ndarray:
@@ -459,7 +460,12 @@ def parse_inputs(lines, plan: SolvePlan, source: str = "<inputs>") -> np.ndarray
     rows: list[list[float]] = []
     problems: list[EdgeListProblem] = []
     first = True
+    most = memory_limit() // pose_bytes(plan)  # more poses than a sweep of them may take
+    lines = iter(lines)
     for line_no, raw in enumerate(lines, start=1):
+        if len(rows) >= most:  # counted to the end, not kept: the sweep of them is refused
+            poses = len(rows) + sum(1 for line in (raw, *lines) if line.split("#", 1)[0].strip())
+            _check_size(plan, poses, True, f"the {poses} poses of {source}")
         text = raw.split("#", 1)[0].replace(",", " ").split()
         if not text:
             continue
@@ -509,13 +515,11 @@ def _numbers(tokens: list[str]) -> list[float] | None:
     return values if all(math.isfinite(v) for v in values) else None
 
 
-def read_inputs(path, plan: SolvePlan) -> np.ndarray:
-    """:func:`parse_inputs` of a file (an unreadable file is an :class:`EdgeListError` too)."""
-    try:
-        with open(path, encoding="utf-8") as handle:
-            lines = handle.readlines()
-    except (OSError, UnicodeDecodeError) as exc:
-        reason = getattr(exc, "strerror", None) or str(exc)
-        problem = EdgeListProblem(0, "", f"cannot read it: {reason}")
-        raise EdgeListError(str(path), [problem]) from exc
-    return parse_inputs(lines, plan, str(path))
+def read_inputs(path, plan: SolvePlan, max_bytes: int = MAX_FILE_BYTES) -> np.ndarray:
+    """:func:`parse_inputs` of a file (an unreadable file is an :class:`EdgeListError` too).
+
+    Only a regular file of at most ``max_bytes`` is read
+    (:func:`~structure.readwrite.textfile.open_user_file`).
+    """
+    with open_user_file(path, max_bytes) as handle:
+        return parse_inputs(handle, plan, str(path))

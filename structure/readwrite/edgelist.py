@@ -83,7 +83,7 @@ from ..validation import (
 )
 from .camfile import cam_from_tokens
 from .jsonformat import mechanism_from_json
-from .textfile import opened
+from .textfile import MAX_FILE_BYTES, open_user_file, read_text
 
 __all__ = [
     "pair_from_tokens",
@@ -315,11 +315,19 @@ def _pair_with_options(
             raise _grammar_problem(kind, a, b, options, reason)
         if key in options:
             raise _grammar_problem(kind, a, b, options, f"option {key!r} given twice")
+        if key in _NOT_OPTIONS:  # a parameter of make_pair's own, no option of any pair
+            _grammar_problem(kind, a, b, options, "")
+            check_pair_option(kind, key)
         options[key] = value
     if not options:
         return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no)
     typed = {key: _OPTION_READERS.get(key, str)(text) for key, text in options.items()}
     return make_pair(pair_id, kind, a, b, point, gear=gear, line_no=line_no, **typed)
+
+
+#: the names of :func:`make_pair`'s own parameters: ``a=b`` on a line is refused as the
+#: unknown option it is, never passed on as a second value of ``a``
+_NOT_OPTIONS = frozenset(("pair_id", "kind", "a", "b", "point", "gear", "line_no"))
 
 
 def _grammar_problem(
@@ -507,10 +515,11 @@ def _target(tokens: list[str], line_no: int) -> Target:
     )
 
 
-def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
+def read_edgelist(path: str | os.PathLike[str], max_bytes: int = MAX_FILE_BYTES) -> Mechanism:
     """Read a mechanism from an edge-list file (UTF-8).
 
-    A ``.json`` file is read as the JSON form of the same model.
+    A ``.json`` file is read as the JSON form of the same model. Only a regular
+    file of at most ``max_bytes`` is read (:func:`~.textfile.open_user_file`).
 
     Raises
     ------
@@ -518,11 +527,10 @@ def read_edgelist(path: str | os.PathLike[str]) -> Mechanism:
         On any problem in the file, or when it cannot be read.
     """
     path = Path(path)
-    with opened(path):
-        if path.suffix.lower() == ".json":
-            return mechanism_from_json(path.read_text(encoding="utf-8-sig"), source=str(path))
-        with path.open(encoding="utf-8-sig") as handle, paused_gc():
-            return parse_edgelist(handle, source=str(path))
+    if path.suffix.lower() == ".json":
+        return mechanism_from_json(read_text(path, max_bytes), source=str(path))
+    with open_user_file(path, max_bytes) as handle, paused_gc():
+        return parse_edgelist(handle, source=str(path))
 
 
 def pair_tokens(pair: Pair) -> list[str]:

@@ -10,7 +10,10 @@ Reading, by extension:
   starts with ``M[`` (after comments), else the edge list.
 
 Writing, by extension: ``.edges`` the edge list, ``.json`` our JSON form,
-``.pyslvs`` a Pyslvs-UI project. Edge list and JSON round-trip losslessly.
+``.pyslvs`` a Pyslvs-UI project. Edge list and JSON round-trip losslessly;
+:func:`mechanism_left_out` says, a line per kind, what another format leaves out
+(a pyslvs project has no loads, ...). A file is written whole or not at all
+(:mod:`structure.readwrite.atomic`).
 
 >>> import tempfile, pathlib
 >>> folder = pathlib.Path(tempfile.mkdtemp())
@@ -34,15 +37,18 @@ from pathlib import Path
 from ..errors import MechanismError
 from ..model import Mechanism
 from ..utils import paused_gc
+from ..validation import as_title
+from .atomic import write_text
 from .edgelist import parse_edgelist, write_edgelist
 from .jsonformat import decode_json, mechanism_from_dict, mechanism_to_json
 from .pylinkage import is_pylinkage, mechanism_from_pylinkage
-from .pyslvs import looks_like_expression, parse_pyslvs, pyslvs_project
-from .textfile import read_text
+from .pyslvs import looks_like_expression, parse_pyslvs, pyslvs_left_out, pyslvs_project
+from .textfile import MAX_FILE_BYTES, read_text
 
 __all__ = [
     "READ_SUFFIXES",
     "WRITE_SUFFIXES",
+    "mechanism_left_out",
     "mechanism_text",
     "parse_mechanism",
     "read_mechanism",
@@ -86,6 +92,9 @@ _WRITERS: dict[str, Callable[[Mechanism], str]] = {
 #: extensions :func:`write_mechanism` writes
 WRITE_SUFFIXES = tuple(_WRITERS)
 
+#: what each format that cannot hold everything leaves out (the others hold it all)
+_LEFT_OUT: dict[str, Callable[[Mechanism], tuple[str, ...]]] = {".pyslvs": pyslvs_left_out}
+
 
 def parse_mechanism(text: str, suffix: str = ".edges", source: str = "<string>") -> Mechanism:
     """Parse ``text`` as the format of a file ending in ``suffix`` (see the module).
@@ -95,14 +104,15 @@ def parse_mechanism(text: str, suffix: str = ".edges", source: str = "<string>")
     EdgeListError
         On any problem in the text.
     """
-    name = Path(source).stem if source and not source.startswith("<") else ""
+    name = as_title(Path(source).stem) if source and not source.startswith("<") else ""
     return _READERS.get(suffix.lower(), _text)(text, source, name)
 
 
-def read_mechanism(path: str | os.PathLike[str]) -> Mechanism:
+def read_mechanism(path: str | os.PathLike[str], max_bytes: int = MAX_FILE_BYTES) -> Mechanism:
     """Read a mechanism file (UTF-8) in the format its extension and text say.
 
-    A pyslvs expression, which has no title, is named after the file.
+    A pyslvs expression, which has no title, is named after the file. Only a
+    regular file of at most ``max_bytes`` is read (:func:`~.textfile.read_text`).
 
     Raises
     ------
@@ -110,7 +120,7 @@ def read_mechanism(path: str | os.PathLike[str]) -> Mechanism:
         On any problem in the file, or when it cannot be read.
     """
     path = Path(path)
-    text = read_text(path)
+    text = read_text(path, max_bytes)
     return parse_mechanism(text, path.suffix, str(path))
 
 
@@ -133,8 +143,24 @@ def mechanism_text(mechanism: Mechanism, suffix: str) -> str:
     return writer(mechanism)
 
 
+def mechanism_left_out(mechanism: Mechanism, suffix: str) -> tuple[str, ...]:
+    """What a file of extension ``suffix`` leaves out of ``mechanism``, a line per kind.
+
+    Empty for the edge list and the JSON form, which hold everything.
+
+    >>> from structure import parse_edgelist
+    >>> m = parse_edgelist(["0 1 R A", "point A 0 0", "moment 1 5"])
+    >>> mechanism_left_out(m, ".json"), mechanism_left_out(m, ".pyslvs")[0]
+    ((), 'pyslvs projects hold no loads: 1 moment statement left out')
+    """
+    lines = _LEFT_OUT.get(suffix.lower())
+    return () if lines is None else lines(mechanism)
+
+
 def write_mechanism(mechanism: Mechanism, path: str | os.PathLike[str]) -> Path:
-    """Write ``mechanism`` to ``path`` in the format of its extension (UTF-8).
+    """Write ``mechanism`` to ``path`` in the format of its extension (UTF-8), whole or not at all.
+
+    What the format leaves out is not said here: ask :func:`mechanism_left_out`.
 
     Raises
     ------
@@ -144,9 +170,4 @@ def write_mechanism(mechanism: Mechanism, path: str | os.PathLike[str]) -> Path:
         A mechanism the format cannot hold.
     """
     path = Path(path)
-    text = mechanism_text(mechanism, path.suffix)
-    try:
-        path.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        raise MechanismError(f"cannot write {path}: {exc.strerror or exc}") from exc
-    return path
+    return write_text(path, mechanism_text(mechanism, path.suffix))

@@ -41,7 +41,7 @@ from ..model import (
     make_point,
     make_target,
 )
-from ..validation import DRIVER_KEYS, tooth_number, validated
+from ..validation import DRIVER_KEYS, check_title, tooth_number, validated
 from .camfile import cam_from_item, cam_to_item
 
 __all__ = [
@@ -202,6 +202,10 @@ def mechanism_from_dict(data: Any, source: str = "<dict>") -> Mechanism:
     if not isinstance(name, str):
         problems.add("name", "must be a string")
         name = ""
+    try:
+        check_title(name)
+    except StatementError as exc:
+        problems.add("name", exc.reason)
     ground = data.get("ground", "0")
     if not _is_name(ground):
         problems.add("ground", "must be a link name")
@@ -345,12 +349,15 @@ def _read_drivers(raw: Any, problems: _Problems) -> list[Driver]:
     drivers: list[Driver] = []
     for i, item in enumerate(raw):
         where = f"drivers[{i}]"
-        if _is_name(item):
-            drivers.append(make_driver(_text(item)))
-        elif isinstance(item, dict) and _is_name(item.get("link")):
-            drivers.append(_read_driver(item, where, problems))
-        else:
-            problems.add(where, "must be a link name or an object with 'link'")
+        try:
+            if _is_name(item):
+                drivers.append(make_driver(_text(item)))
+            elif isinstance(item, dict) and _is_name(item.get("link")):
+                drivers.append(_read_driver(item, where, problems))
+            else:
+                problems.add(where, "must be a link name or an object with 'link'")
+        except StatementError as exc:
+            problems.add(where, exc.reason)
     return drivers
 
 

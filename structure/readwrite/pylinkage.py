@@ -49,8 +49,9 @@ import re
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
-from ..errors import EdgeListError, EdgeListProblem
-from ..model import Driver, Mechanism, Pair, PairKind, PointDef, validated
+from ..errors import EdgeListError, EdgeListProblem, StatementError
+from ..model import Driver, Mechanism, Pair, PairKind, PointDef, make_point, validated
+from ..validation import MAX_MAGNITUDE, as_title
 from .jsonformat import decode_json
 
 __all__ = ["is_pylinkage", "mechanism_from_pylinkage", "parse_pylinkage"]
@@ -61,6 +62,8 @@ _LINK_KINDS = ("ground", "driver", "arc_driver", "link")
 _UNSAFE = re.compile(r"[\s#=,]")
 #: how far (relative to the drawing's size) a slider may sit off its line
 _ON_LINE = 1e-6
+#: what a coordinate must be, as the messages say it
+_NUMBERS = f"finite numbers within ±{MAX_MAGNITUDE:g}"
 
 
 class _Problems(Exception):
@@ -83,13 +86,23 @@ def _token(name: Any) -> str:
     return _UNSAFE.sub("_", str(name)) or "_"
 
 
+def _finite(value: Any) -> float | None:
+    """A number within ±:data:`~structure.validation.MAX_MAGNITUDE` as a float, else None."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return None
+    try:
+        number = float(value)
+    except OverflowError:  # an integer beyond the float range
+        return None
+    return number if math.isfinite(number) and abs(number) <= MAX_MAGNITUDE else None
+
+
 def _finite_pair(value: Any) -> tuple[float, float] | None:
+    """``[x, y]`` of numbers within ±:data:`~structure.validation.MAX_MAGNITUDE`, else None."""
     if not isinstance(value, (list, tuple)) or len(value) != 2:
         return None
-    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
-        return None
-    x, y = float(value[0]), float(value[1])
-    return (x, y) if math.isfinite(x) and math.isfinite(y) else None
+    x, y = _finite(value[0]), _finite(value[1])
+    return None if x is None or y is None else (x, y)
 
 
 def is_pylinkage(data: Any) -> bool:
@@ -184,7 +197,11 @@ def _mechanism(assembly: _Assembly, name: str, source: str, number: bool) -> Mec
             on = link[holder]
         elif len(carriers) == 1:
             on = link[carriers[0]]
-        points[joint] = PointDef(joint, x, y, on)
+        try:
+            points[joint] = make_point(joint, x, y, on)
+        except StatementError as exc:
+            assembly.problems.append(f"joint {joint}: {exc.reason}")
+            continue
         for other in carriers[1:]:
             pairs.append(Pair(len(pairs) + 1, PairKind.R, link[carriers[0]], link[other], joint))
     for joint, block, angle, guide in assembly.slides:
@@ -248,7 +265,7 @@ def _joints(data: Mapping[str, Any], assembly: _Assembly) -> dict[Any, str]:
             pending.append((name, item))
             continue
         if xy is None:
-            assembly.problems.append(f"joint {name}: 'position' must be [x, y], finite numbers")
+            assembly.problems.append(f"joint {name}: 'position' must be [x, y], {_NUMBERS}")
             continue
         assembly.xy[name] = xy
         if kind == "ground":
@@ -257,7 +274,9 @@ def _joints(data: Mapping[str, Any], assembly: _Assembly) -> dict[Any, str]:
             through = _finite_pair(item.get("line_point", [0.0, 0.0]))
             axis = _finite_pair(item.get("axis", [1.0, 0.0]))
             if through is None or axis is None:
-                assembly.problems.append(f"joint {name}: 'axis' and 'line_point' must be [x, y]")
+                assembly.problems.append(
+                    f"joint {name}: 'axis' and 'line_point' must be [x, y], {_NUMBERS}"
+                )
                 continue
             angle, why = _slide_angle(f"joint {name}", xy, through, axis)
             if why:
@@ -278,9 +297,9 @@ def _tracker(name: str, item: dict, names: Mapping[Any, str], assembly: _Assembl
     xy = _finite_pair(item.get("position"))
     if xy is None:
         (x1, y1), (x2, y2) = assembly.xy[first], assembly.xy[second]
-        distance, angle = item.get("distance", 0.0), item.get("angle", 0.0)
-        if not all(isinstance(v, (int, float)) for v in (distance, angle)):
-            assembly.problems.append(f"tracker {name}: 'distance' and 'angle' must be numbers")
+        distance, angle = _finite(item.get("distance", 0.0)), _finite(item.get("angle", 0.0))
+        if distance is None or angle is None:
+            assembly.problems.append(f"tracker {name}: 'distance' and 'angle' must be {_NUMBERS}")
             return
         heading = math.atan2(y2 - y1, x2 - x1) + angle
         xy = (x1 + distance * math.cos(heading), y1 + distance * math.sin(heading))
@@ -291,7 +310,11 @@ def _tracker(name: str, item: dict, names: Mapping[Any, str], assembly: _Assembl
 def _links(data: Mapping[str, Any], names: Mapping[Any, str], assembly: _Assembly) -> None:
     """Read the links of the mechanism format: ground links join the frame (body 0)."""
     taken = set(assembly.names)
-    for index, item in enumerate(data.get("links") or []):
+    links = data.get("links")
+    if links is not None and not isinstance(links, list):
+        assembly.problems.append("'links' must be a list of link objects")
+        return
+    for index, item in enumerate(links or []):
         where = f"links[{index}]"
         if not isinstance(item, dict) or not isinstance(item.get("joints", []), list):
             assembly.problems.append(f"{where}: must be an object with a list of 'joints'")
@@ -317,9 +340,10 @@ def _links(data: Mapping[str, Any], names: Mapping[Any, str], assembly: _Assembl
 
 
 def _from_mechanism_format(data: Mapping[str, Any], source: str) -> Mechanism:
+    links = data.get("links")
     grounds = [
         item.get("id")
-        for item in data.get("links") or []
+        for item in (links if isinstance(links, list) else [])
         if isinstance(item, dict) and item.get("type") == "ground"
     ]
     ground = _key(data.get("ground")) or _key(grounds[0] if grounds else None) or "ground"
@@ -329,7 +353,7 @@ def _from_mechanism_format(data: Mapping[str, Any], source: str) -> Mechanism:
     if assembly.problems:
         raise _Problems(assembly.problems)
     # a slider's block was made before the links: keep the links' own names first
-    return _mechanism(assembly, str(data.get("name") or ""), source, number=False)
+    return _mechanism(assembly, as_title(str(data.get("name") or "")), source, number=False)
 
 
 # ---------------------------------------------------------- the older format
@@ -387,7 +411,7 @@ def _from_linkage_format(data: Mapping[str, Any], source: str) -> Mechanism:
         names[_key(item.get("name")) or name] = name
         xy = _finite_pair([item.get("x"), item.get("y")])
         if xy is None:
-            assembly.problems.append(f"joint {name}: 'x' and 'y' must be finite numbers")
+            assembly.problems.append(f"joint {name}: 'x' and 'y' must be {_NUMBERS}")
             continue
         assembly.xy[name] = xy
         if item["type"] == "Static":
@@ -400,7 +424,7 @@ def _from_linkage_format(data: Mapping[str, Any], source: str) -> Mechanism:
         _legacy_joint(item, name, names, assembly)
     if assembly.problems:
         raise _Problems(assembly.problems)
-    return _mechanism(assembly, str(data.get("name") or ""), source, number=True)
+    return _mechanism(assembly, as_title(str(data.get("name") or "")), source, number=True)
 
 
 # ------------------------------------------------------------------- public

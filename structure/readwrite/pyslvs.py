@@ -61,12 +61,24 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..errors import EdgeListError, EdgeListProblem
-from ..model import Driver, Mechanism, Pair, PairKind, PointDef, number_text, validated
-from .textfile import read_text
+from ..errors import EdgeListError, EdgeListProblem, NumberError, StatementError, clipped
+from ..model import (
+    Driver,
+    Mechanism,
+    Pair,
+    PairKind,
+    PointDef,
+    make_point,
+    number_text,
+    validated,
+)
+from ..validation import as_title, check_magnitude
+from .omissions import Holds, left_out, renames
+from .textfile import MAX_FILE_BYTES, read_text
 
 __all__ = [
     "JOINT_KINDS",
+    "PYSLVS_HOLDS",
     "PyslvsJoint",
     "format_expression",
     "looks_like_expression",
@@ -77,6 +89,7 @@ __all__ = [
     "parse_expression",
     "parse_pyslvs",
     "pyslvs_inputs",
+    "pyslvs_left_out",
     "pyslvs_link_names",
     "pyslvs_project",
     "read_pyslvs",
@@ -212,7 +225,13 @@ class _ExpressionParser:
         token = self._expect("number", what)
         value = float(token.text)
         if not math.isfinite(value):
-            raise _SyntaxProblem(token.offset, f"{what} {token.text} is not a finite number")
+            raise _SyntaxProblem(
+                token.offset, f"{what} {clipped(token.text)} is not a finite number"
+            )
+        try:
+            check_magnitude(value)
+        except NumberError as exc:
+            raise _SyntaxProblem(token.offset, f"{what}: {exc.reason}") from None
         return value
 
     def mechanism(self) -> list[tuple[int, PyslvsJoint]]:
@@ -384,7 +403,8 @@ def _joint_pairs(
     return [slide, *_hinge_pairs(pins, point, joint.line_no, first_id + 1)], None
 
 
-def _points(joints: Sequence[PyslvsJoint]) -> dict[str, PointDef]:
+def _points(joints: Sequence[PyslvsJoint], problems: list[EdgeListProblem]) -> dict[str, PointDef]:
+    """The points ``J<i>`` of the joints, each checked as every reader's (:func:`make_point`)."""
     points: dict[str, PointDef] = {}
     for index, joint in enumerate(joints):
         name = f"J{index}"
@@ -393,7 +413,12 @@ def _points(joints: Sequence[PyslvsJoint]) -> dict[str, PointDef]:
             on = joint.links[0]
         elif not joint.links:
             on = FRAME
-        points[name] = PointDef(name, joint.x, joint.y, on, joint.line_no)
+        try:
+            points[name] = make_point(name, joint.x, joint.y, on, line_no=joint.line_no)
+        except StatementError as exc:
+            problems.append(
+                EdgeListProblem(joint.line_no, joint.expression, f"joint J{index}: {exc.reason}")
+            )
     return points
 
 
@@ -461,10 +486,11 @@ def mechanism_from_joints(
                 EdgeListProblem(joint.line_no, joint.expression, f"joint J{index}: {why}")
             )
         pairs.extend(made)
+    points = _points(joints, problems)
     if problems:
         raise EdgeListError(source, problems)
     drivers = tuple(Driver(link) for link in pyslvs_inputs(joints, inputs, source))
-    mechanism = Mechanism(tuple(pairs), FRAME, drivers, _points(joints), name, source)
+    mechanism = Mechanism(tuple(pairs), FRAME, drivers, points, name, source)
     return validated(mechanism)
 
 
@@ -574,6 +600,12 @@ def mechanism_to_joints(mechanism: Mechanism) -> tuple[tuple[PyslvsJoint, ...], 
     EdgeListError
         A higher pair (pyslvs has none), a pair without coordinates.
     """
+    joints, _, inputs = _joints_of(mechanism)
+    return joints, inputs
+
+
+def _joints_of(mechanism: Mechanism) -> tuple[tuple[PyslvsJoint, ...], tuple[str, ...], tuple]:
+    """The joints, the point each is written from (``J<i>`` on reading), the input pairs."""
     higher = [p for p in mechanism.pairs if p.kind is PairKind.H]
     if higher:
         raise EdgeListError(
@@ -586,6 +618,7 @@ def mechanism_to_joints(mechanism: Mechanism) -> tuple[tuple[PyslvsJoint, ...], 
     names = pyslvs_link_names(mechanism)
     blocks = _blocks(mechanism)
     joints: list[PyslvsJoint] = []
+    points: list[str] = []
     where: dict[str, int] = {}  # point -> joint index of its R joint
     for hinge in mechanism.hinges:
         links = [link for link in hinge.links if link not in blocks]
@@ -594,11 +627,13 @@ def mechanism_to_joints(mechanism: Mechanism) -> tuple[tuple[PyslvsJoint, ...], 
         x, y = _coordinates(mechanism, mechanism.pair(hinge.pairs[0]))
         where[hinge.point] = len(joints)
         joints.append(PyslvsJoint("R", _ordered(links, mechanism.ground, names), x, y))
+        points.append(hinge.point)
     for pair in mechanism.pairs:
         if pair.kind is not PairKind.P:
             continue
         x, y = _coordinates(mechanism, pair)
         block = next((b for b, slide in blocks.items() if slide is pair), None)
+        points.append(pair.point or "")
         if block is None:
             # a prismatic pair is symmetric: the slot on the ground, when it is one of them
             links = _ordered(pair.links, mechanism.ground, names)
@@ -613,7 +648,59 @@ def mechanism_to_joints(mechanism: Mechanism) -> tuple[tuple[PyslvsJoint, ...], 
         if point.on is not None and point.name not in where:
             on = (names[point.on],) if point.on in names else ()
             joints.append(PyslvsJoint("R", on, point.x, point.y))
-    return tuple(joints), _inputs(mechanism, joints, names)
+            points.append(point.name)
+    return tuple(joints), tuple(points), _inputs(mechanism, joints, names)
+
+
+#: what a Pyslvs-UI project keeps of a mechanism: its joints, slot angles and rotating inputs
+PYSLVS_HOLDS = Holds(
+    "pyslvs projects",
+    title=False,
+    loads=False,
+    motion=False,
+    options=frozenset({"angle"}),
+    exact=False,
+    free_points=False,
+)
+
+
+def pyslvs_left_out(mechanism: Mechanism) -> tuple[str, ...]:
+    """What a Pyslvs-UI project of ``mechanism`` leaves out or renames, a line per kind.
+
+    Loads, driver motion, the name, pair options but the slot angle, exact
+    expressions, points that are no joint, drivers that are no rotating input;
+    links renamed as identifiers and points renumbered ``J<i>`` (see
+    :func:`~structure.readwrite.omissions.left_out`).
+
+    >>> from structure import parse_edgelist
+    >>> m = parse_edgelist(["driver 1 omega=10", "0 1 R A", "point A 0 0", "point B 1 0 on=1"])
+    >>> for line in pyslvs_left_out(m):
+    ...     print(line)
+    pyslvs projects hold no driver motion: omega of driver 1 left out
+    pyslvs projects name things their own way: link 0 → ground, link 1 → L1, point A → J0, ...
+
+    Raises
+    ------
+    EdgeListError
+        A mechanism pyslvs cannot hold at all (see :func:`mechanism_to_joints`).
+    """
+    joints, points, inputs = _joints_of(mechanism)
+    names = pyslvs_link_names(mechanism)
+    lines = list(left_out(mechanism, PYSLVS_HOLDS))
+    driven = {
+        link for base, other in inputs for link in joints[base].links if link in joints[other].links
+    }
+    dropped = [link for link in mechanism.driver_links if names[link] not in driven]
+    if dropped:
+        plural = "s" if len(dropped) > 1 else ""
+        lines.append(
+            f"pyslvs projects drive by turning a link pinned to the ground only: driver{plural} "
+            f"{', '.join(dropped)} left out"
+        )
+    renamed = {f"link {old}": new for old, new in names.items()}
+    renamed.update({f"point {old}": f"J{k}" for k, old in enumerate(points) if old})
+    lines.extend(renames(PYSLVS_HOLDS.format, renamed))
+    return tuple(lines)
 
 
 def _ordered(links: Sequence[str], ground: str, names: dict[str, str]) -> tuple[str, ...]:
@@ -678,8 +765,12 @@ def _project(text: str, source: str) -> dict[str, Any]:
         line_no = mark.line + 1 if mark is not None else 0
         why = getattr(exc, "problem", None) or "not YAML"
         raise _project_problem(source, f"invalid Pyslvs project: {why}", line_no) from None
-    except (ValueError, TypeError) as exc:  # a scalar YAML reads as a bad date, ...
-        raise _project_problem(source, f"invalid Pyslvs project: {exc}") from None
+    except RecursionError:
+        raise _project_problem(
+            source, "invalid Pyslvs project: lists or mappings nested too deeply"
+        ) from None
+    except (ValueError, TypeError, OverflowError) as exc:  # a scalar read as a bad date, ...
+        raise _project_problem(source, f"invalid Pyslvs project: {clipped(str(exc))}") from None
     if not isinstance(data, dict) or not isinstance(data.get("mechanism"), str):
         raise _project_problem(
             source,
@@ -723,7 +814,7 @@ def pyslvs_project(mechanism: Mechanism) -> str:
     return "\n".join(lines) + "\n"
 
 
-def read_pyslvs(path: str | os.PathLike[str]) -> Mechanism:
+def read_pyslvs(path: str | os.PathLike[str], max_bytes: int = MAX_FILE_BYTES) -> Mechanism:
     """Read a pyslvs expression or Pyslvs-UI project file (UTF-8); named after the file.
 
     Raises
@@ -732,5 +823,5 @@ def read_pyslvs(path: str | os.PathLike[str]) -> Mechanism:
         On any problem in the file, or when it cannot be read.
     """
     path = Path(path)
-    text = read_text(path)
-    return parse_pyslvs(text, str(path), name=path.stem)
+    text = read_text(path, max_bytes)
+    return parse_pyslvs(text, str(path), name=as_title(path.stem))

@@ -20,10 +20,14 @@ from __future__ import annotations
 import csv
 import json
 import os
+import sys
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from typing import IO, Any
 
+from .textfile import open_user_file
+
 __all__ = [
+    "MAX_ROW_BYTES",
     "TABLE_FORMATS",
     "Column",
     "TableWriter",
@@ -37,6 +41,9 @@ TABLE_FORMATS = ("jsonl", "csv", "parquet")
 Column = tuple[str, str]  # (name, type): int, float, str, bool, json
 
 _PARQUET_BATCH = 4096
+
+#: the longest row :func:`read_table_lines` reads back (bytes): rows are far shorter
+MAX_ROW_BYTES = 1_000_000
 
 
 def _cell(value: Any, kind: str) -> Any:
@@ -131,28 +138,38 @@ def read_table_lines(
 ) -> Iterator[tuple[dict[str, Any], int]]:
     """The complete rows of a JSON-lines or CSV table, each with the byte offset after it.
 
-    A last line cut short (an interrupted run) or unreadable ends the reading.
-    CSV cells come back as text.
+    A last line cut short (an interrupted run), unreadable or longer than
+    :data:`MAX_ROW_BYTES` ends the reading. CSV cells come back as text. The
+    table must be a regular file (of any size): a device or a FIFO is refused.
+
+    Raises
+    ------
+    EdgeListError
+        The file cannot be read, or is no regular file.
     """
     if fmt not in ("jsonl", "csv"):
         raise ValueError("only JSON lines and CSV tables can be read back")
-    with open(path, "rb") as handle:
+    with open_user_file(path, sys.maxsize, binary=True) as handle:
         header: list[str] | None = None
         offset = 0
         pending = ""
-        for raw in handle:
+        while raw := handle.readline(MAX_ROW_BYTES + 1):
             offset += len(raw)
             if not raw.endswith(b"\n"):
                 return
-            text = raw.decode("utf-8")
+            text = raw.decode("utf-8", errors="replace")
             if fmt == "jsonl":
                 try:
                     row = json.loads(text)
                 except ValueError:
                     return
+                if not isinstance(row, dict):
+                    return
                 yield row, offset
                 continue
             pending += text
+            if len(pending) > MAX_ROW_BYTES:
+                return
             if pending.count('"') % 2:  # a quoted cell goes on on the next line
                 continue
             cells, pending = next(csv.reader([pending])), ""

@@ -7,11 +7,13 @@ import io
 import json
 import sys
 
+import networkx as nx
 import pytest
 
 from kinematics.cli.main import main
 from kinematics.cli.tables import progress_bar
 from structure.atlas import ATLAS_COLUMNS
+from structure.chains import chain_from_code, count_chains
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
@@ -150,3 +152,95 @@ def test_progress_bar_only_on_a_terminal(monkeypatch):
     update(10)
     close()
     assert "10/10" in terminal.getvalue()
+
+
+# ------------------------------------------------------------------ counts (issue 22, item 12)
+def _counted(capsys, *argv: str) -> list[tuple[int, int]]:
+    """(chains, inversions) of each line of ``atlas --count``."""
+    code, out, _ = run(capsys, "atlas", "--count", *argv)
+    assert code == 0
+    found = []
+    for line in out.splitlines():
+        _, rest = line.split(": ", 1)
+        chains = int(rest.split()[0])
+        inversions = int(rest.split(" inversions")[0].rsplit(" ", 1)[1])
+        found.append((chains, inversions))
+    return found
+
+
+def test_the_published_one_dof_counts():
+    """1, 2, 16, 230 non-degenerate 1-DOF chains of 4 to 10 links, as published (the
+    references of structure/chains.py: Mruthyunjaya 2003, Yan and Chiu 2015, OEIS A180923),
+    and pyslvs's atlas of 40 eight-link chains, which keeps the degenerate ones but no chain
+    a link cuts in two."""
+    assert [count_chains(n).kept for n in (4, 6, 8, 10)] == [1, 2, 16, 230]
+    assert count_chains(8, degenerate=True, fractionated=False).kept == 40
+    # the 2-DOF chains of 5, 7, 9 links: 1, 4, 40 (the same references)
+    assert [count_chains(n, 2).kept for n in (5, 7, 9)] == [1, 4, 40]
+
+
+@pytest.mark.slow
+def test_the_published_counts_of_twelve_links_and_eleven_at_two_dof():
+    assert count_chains(12).kept == 6856
+    assert count_chains(11, 2).kept == 839
+
+
+def test_count_follows_degenerate_as_the_rows_do(capsys):
+    """The issue's reproducer: ``--count --degenerate --no-fractionated`` said 16 at 8 links
+    where the rows of the same options hold 40 chains."""
+    assert _counted(capsys, "--links", "8", "--degenerate", "--no-fractionated")[0][0] == 40
+    assert _counted(capsys, "--links", "8", "--degenerate")[0][0] == 71
+    assert _counted(capsys, "--links", "8")[0][0] == 16
+
+
+def _ground_orbits(code: str) -> int:
+    """The links of a chain up to its symmetry, by networkx's own isomorphism matcher."""
+    chain = chain_from_code(code)
+    graph = nx.MultiGraph()
+    graph.add_nodes_from(range(chain.links))
+    graph.add_edges_from(chain.joints)
+    matcher = nx.algorithms.isomorphism.MultiGraphMatcher(graph, graph)
+    orbit = {link: {link} for link in graph}
+    for mapping in matcher.isomorphisms_iter():
+        for link, image in mapping.items():
+            orbit[link].add(image)
+    return len({frozenset(o) for o in orbit.values()})
+
+
+_OPTIONS = {
+    "plain": [],
+    "degenerate": ["--degenerate"],
+    "no-fractionated": ["--no-fractionated"],
+    "pyslvs": ["--degenerate", "--no-fractionated"],
+}
+
+
+@pytest.mark.parametrize(
+    ("links", "dof", "options"),
+    [
+        *[pytest.param("4,6", "1", o, id=f"4,6-{name}") for name, o in _OPTIONS.items()],
+        *[pytest.param("5,7", "2", o, id=f"5,7-{name}") for name, o in _OPTIONS.items()],
+        pytest.param("8", "1", _OPTIONS["pyslvs"], id="8-pyslvs"),
+        *[
+            pytest.param("8", "1", o, id=f"8-{name}", marks=pytest.mark.slow)
+            for name, o in _OPTIONS.items()
+            if name != "pyslvs"
+        ],
+    ],
+)
+def test_count_equals_the_rows_for_every_option(capsys, links, dof, options):
+    """``--count`` gives, per link count, the chains the rows of the same options hold, and
+    their inversions: the ground links up to each chain's symmetry (counted here from the
+    rows' chains with networkx, not with the atlas's own canonical labelling)."""
+    counts = _counted(capsys, "--links", links, "--dof", dof, *options)
+    code, out, _ = run(capsys, "atlas", "--links", links, "--dof", dof, *options)
+    assert code == 0
+    chains: dict[int, set[str]] = {}
+    for line in out.splitlines():
+        row = json.loads(line)
+        chains.setdefault(row["links"], set()).add(row["chain"])
+    found = [
+        (len(codes), sum(_ground_orbits(code) for code in codes))
+        for _, codes in sorted(chains.items())
+    ]
+    assert counts == found

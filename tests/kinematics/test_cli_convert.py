@@ -37,7 +37,15 @@ def test_edges_to_json_to_edges_is_lossless(tmp_path, capsys, path):
 def test_a_mechanism_goes_to_pyslvs_and_back(tmp_path, capsys):
     out = tmp_path / "shaper.pyslvs"
     code, said, err = _convert(capsys, FIXTURES / "quick_return_shaper.edges", out)
-    assert (code, said, err) == (0, f"wrote {out}\n", "")
+    assert (code, said) == (0, f"wrote {out}\n")
+    # what a pyslvs project cannot hold is named, one warning line per kind (issue 22, item 11)
+    assert err.splitlines() == [
+        f"warning: {out}: pyslvs projects have no title: the name "
+        "'quick-return shaper (crank and slotted lever with ram)' left out",
+        f"warning: {out}: pyslvs projects hold no driver motion: omega of driver 1 left out",
+        f"warning: {out}: pyslvs projects name things their own way: link 0 → ground, "
+        "link 1 → L1, link 2 → L2, link 3 → L3, link 4 → L4, link 5 → L5, ...",
+    ]
     assert out.read_text(encoding="utf-8").startswith(
         "mechanism: 'M[J[R, P[0, 0.3], L[ground, L1]]"
     )

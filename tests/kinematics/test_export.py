@@ -15,9 +15,13 @@ import numpy as np
 import pytest
 
 from kinematics.results.export import (
+    CAM_LAYER,
     GROUND_LAYER,
     LABEL_LAYER,
+    PITCH_LAYER,
+    TEETH_LAYER,
     dxf_layers,
+    dxf_left_out,
     write_dxf,
     write_parquet,
 )
@@ -42,6 +46,10 @@ DRAWN = (
 )
 
 
+#: the layers of the higher pairs' own geometry (issue 22, item 11)
+HIGHER_PAIR_LAYERS = {PITCH_LAYER, TEETH_LAYER, CAM_LAYER}
+
+
 def _solved(name: str, turn: float = 0.7):
     report = analyze(read_edgelist(FIXTURES / f"{name}.edges"))
     plan = make_plan(report)
@@ -60,7 +68,7 @@ def test_every_layer_is_a_group_the_ground_or_the_labels(tmp_path, name):
     report, _, _, msp = _read_back(tmp_path, name)
     groups = {g.label for g in report.groups} | {f"I({d})" for d in report.drivers}
     layers = {e.dxf.layer for e in msp}
-    assert layers <= groups | {GROUND_LAYER, LABEL_LAYER}
+    assert layers <= groups | {GROUND_LAYER, LABEL_LAYER} | HIGHER_PAIR_LAYERS
     assert groups <= layers  # every group is drawn
     assert any(e.dxftype() == "LINE" and e.dxf.layer == GROUND_LAYER for e in msp)
 
@@ -69,7 +77,7 @@ def test_every_layer_is_a_group_the_ground_or_the_labels(tmp_path, name):
 def test_pins_are_circles_where_the_pose_puts_them(tmp_path, name):
     report, plan, state, msp = _read_back(tmp_path, name)
     layers = dxf_layers(report)
-    circles = [e for e in msp if e.dxftype() == "CIRCLE"]
+    circles = [e for e in msp if e.dxftype() == "CIRCLE" and e.dxf.layer not in HIGHER_PAIR_LAYERS]
     hinges = [h for h in plan.mechanism.hinges if plan.mechanism.coordinates(h.point)]
     assert len(circles) == len(hinges)
     centres = {(round(e.dxf.center.x, 9), round(e.dxf.center.y, 9)): e.dxf.layer for e in circles}
@@ -118,7 +126,7 @@ def test_entity_counts_of_the_four_bar(tmp_path):
     _, _, _, msp = _read_back(tmp_path, "fourbar")
     counts = Counter(e.dxftype() for e in msp)
     assert counts["CIRCLE"] == 4 and counts["POINT"] == 1  # pins A, B, C, D; marker M
-    assert counts["TEXT"] == 5  # the four pins and M
+    assert counts["TEXT"] == 6  # the four pins, M and the mechanism's name
 
 
 def test_parquet_holds_the_csv_numbers(tmp_path):
@@ -131,3 +139,56 @@ def test_parquet_holds_the_csv_numbers(tmp_path):
     assert table.num_rows == 12
     for k, name in enumerate(rows[0]):
         assert table.column(name).to_pylist() == [float(row[k]) for row in rows[1:]]
+
+
+# ------------------------------------------------------------------ higher pairs (issue 22, 11)
+def _circles(msp, layer: str) -> list[tuple[float, float, float]]:
+    return sorted(
+        (round(e.dxf.center.x, 9), round(e.dxf.center.y, 9), round(e.dxf.radius, 9))
+        for e in msp
+        if e.dxftype() == "CIRCLE" and e.dxf.layer == layer
+    )
+
+
+def test_a_gear_pair_keeps_its_pitch_circles_and_tooth_numbers(tmp_path):
+    """fixtures/gear_pair.edges: z = 20, 40, module 4 mm, centres O1 (0, 0) and O2 (0.12, 0):
+    pitch radii m·z/2 = 0.04 and 0.08 m, which touch at the pitch point K (0.04, 0)."""
+    _, _, _, msp = _read_back(tmp_path, "gear_pair")
+    assert _circles(msp, PITCH_LAYER) == [(0.0, 0.0, 0.04), (0.12, 0.0, 0.08)]
+    numbers = sorted(
+        e.dxf.text for e in msp if e.dxftype() == "TEXT" and e.dxf.layer == TEETH_LAYER
+    )
+    assert numbers == ["z = 20", "z = 40"]
+
+
+def test_a_cam_keeps_its_disc_and_roller(tmp_path):
+    """fixtures/cam_roller_follower.edges: the disc of radius 0.05 about C1 (0.0173205, 0.01),
+    the roller of radius 0.015 about R0 (0.0286076, 0.0740125), at the sketch pose."""
+    _, _, _, msp = _read_back(tmp_path, "cam_roller_follower")
+    found = _circles(msp, CAM_LAYER)
+    expected = [(0.017320508, 0.01, 0.05), (0.02860764, 0.074012504, 0.015)]
+    np.testing.assert_allclose(found, expected, atol=1e-8)
+
+
+def test_a_flat_faced_follower_keeps_its_face(tmp_path):
+    _, _, _, msp = _read_back(tmp_path, "cam_flat_follower")
+    assert any(e.dxftype() == "LINE" and e.dxf.layer == CAM_LAYER for e in msp)
+    assert any(e.dxftype() == "CIRCLE" and e.dxf.layer == CAM_LAYER for e in msp)
+
+
+def test_the_name_and_every_named_point_are_in_the_drawing(tmp_path):
+    report, _, _, msp = _read_back(tmp_path, "gear_pair")
+    texts = {e.dxf.text for e in msp if e.dxftype() == "TEXT"}
+    assert report.mechanism.name in texts
+    assert set(report.mechanism.points) <= texts  # N1, N2: the centres of curvature too
+
+
+def test_what_a_drawing_leaves_out_is_named():
+    mechanism = read_edgelist(FIXTURES / "ch3_3_5_crank_slider.edges")
+    kinds = {load.kind.value for load in mechanism.loads}
+    lines = dxf_left_out(mechanism)
+    assert any(line.startswith("DXF drawings hold no loads:") for line in lines)
+    assert all(kind in " ".join(lines) for kind in kinds)
+    assert dxf_left_out(read_edgelist(FIXTURES / "gear_pair.edges")) == (
+        "DXF drawings hold no driver motion: omega of driver 1 left out",
+    )

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import io
 import json
+import os
 import shutil
 from pathlib import Path
 
@@ -176,3 +177,57 @@ def test_a_directory_reads_every_format_by_its_reader():
         ("jansen.pyslvs", 1, None),
     ]
     assert rows[1]["formula"] == "I(L1) → II(L2,L4) → II(L3,L5) → II(L6,L7)"
+
+
+# ------------------------------------------------------------------ issue 22, item 6
+def test_a_fifo_and_a_link_to_a_device_in_a_folder_are_skipped_with_their_reason(
+    tmp_path, capsys
+):
+    """A FIFO in the folder hung the run; a link to /dev/zero ended in MemoryError."""
+    shutil.copy(FIXTURES / "fourbar.edges", tmp_path / "a_fourbar.edges")
+    os.mkfifo(tmp_path / "b_pipe.edges")
+    (tmp_path / "c_zero.edges").symlink_to("/dev/zero")
+    big = tmp_path / "d_big.edges"
+    text = (FIXTURES / "fourbar.edges").read_text(encoding="utf-8")
+    big.write_text(text + "#" * 10_000 + "\n", encoding="utf-8")
+    shutil.copy(FIXTURES / "crank_slider.edges", tmp_path / "e_slider.edges")
+    size = 10_000
+    code = main(["classify", str(tmp_path), "--max-file-size", str(size)])
+    out, err = capsys.readouterr()
+    assert code == 1 and err == ""
+    lines = out.splitlines()
+    assert "a_fourbar.edges  1  II     I(1) → II(2,3)" in lines[1]
+    assert "b_pipe.edges" in lines[2] and "not a regular file (a FIFO)" in lines[2]
+    assert "c_zero.edges" in lines[3] and "not a regular file (a character device)" in lines[3]
+    assert "d_big.edges" in lines[4] and "more than the 10 kB assur reads" in lines[4]
+    assert "--max-file-size" in lines[4]
+    assert "e_slider.edges" in lines[5] and "error" not in lines[5]  # and the run went on
+    assert lines[-1] == "5 mechanisms, 3 errors"
+
+
+def test_items_are_read_one_at_a_time(tmp_path):
+    """A long batch does not hold every file's text at once: each is read when it is taken."""
+    for k in range(3):
+        shutil.copy(FIXTURES / "fourbar.edges", tmp_path / f"{k}.edges")
+    items = batch_items([str(tmp_path)])
+    first = next(items)
+    (tmp_path / "2.edges").write_text("0 1 Q A\n", encoding="utf-8")  # changed after the start
+    assert first.text and "0 1 Q A" in [i.text for i in items][-1]
+
+
+def test_a_stdin_line_longer_than_the_limit_is_skipped(capsys):
+    line = mechanism_to_json(read_edgelist(FIXTURES / "fourbar.edges"), indent=None)
+    assert len(line) < 2000
+    text = "x" * 5000 + "\n" + line + "\n"
+    rows = list(classify_batch(batch_items(["-"], io.StringIO(text), max_bytes=2000)))
+    assert "longer than 2 kB" in rows[0]["error"] and rows[0]["source"] == "<stdin>:1"
+    assert rows[1]["source"] == "<stdin>:2" and rows[1]["error"] is None
+
+
+def test_the_output_is_never_an_input(tmp_path, capsys):
+    folder = tmp_path / "in"
+    folder.mkdir()
+    shutil.copy(FIXTURES / "fourbar.edges", folder / "m.edges")
+    code = main(["classify", str(folder), "-o", str(folder / "m.edges"), "--format", "csv"])
+    assert code == 2 and "a file this command reads" in capsys.readouterr().err
+    assert (folder / "m.edges").read_text(encoding="utf-8").startswith("#")

@@ -718,3 +718,23 @@ def test_random_description_round_trip(description):
     m = parse_edgelist(lines, SRC)
     assert parse_edgelist(write_edgelist(m).splitlines(), SRC) == m
     assert mechanism_from_json(mechanism_to_json(m), SRC) == m
+
+
+@pytest.mark.parametrize(
+    ("line", "reason"),
+    [
+        ("0 1 R a=b", "unknown option 'a' for a R pair (allowed: circle)"),
+        ("0 1 R A b=2", "unknown option 'b' for a R pair"),
+        ("0 1 P C point=x", "unknown option 'point' for a P pair"),
+        ("0 1 H K line_no=3", "unknown option 'line_no' for a H pair"),
+        ("0 1 R A gear=1", "unknown option 'gear' for a R pair"),
+        ("0 1 R A kind=P", "unknown option 'kind'"),
+        ("0 1 R A pair_id=9", "unknown option 'pair_id'"),
+        ("0 0 R a=b", "pair joins link 0 to itself"),
+    ],
+)
+def test_an_option_named_like_a_pairs_own_field_is_an_unknown_option(line, reason):
+    """Issue 22: ``0 1 R a=b`` reached make_pair as a second value of ``a`` (TypeError, exit 3)."""
+    with pytest.raises(EdgeListError) as info:
+        parse_edgelist([line])
+    assert info.value.line_no == 1 and reason in info.value.reason

@@ -5,10 +5,12 @@ from __future__ import annotations
 import json
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from structure.errors import EdgeListError, MechanismError
 from structure.model import Driver, Mechanism, PairKind, PointDef
-from structure.readwrite.edgelist import parse_edgelist
+from structure.readwrite.edgelist import parse_edgelist, write_edgelist
 from structure.readwrite.jsonformat import (
     mechanism_from_dict,
     mechanism_from_json,
@@ -448,3 +450,82 @@ def test_a_json_expression_beyond_a_limit_names_the_limit(text, reason):
     for error in (point, load):
         assert len(error.problems) == 1 and reason in error.reason
         assert len(str(error)) < 1000
+
+
+# ------------------------------------------------------------------ lossless (issue 22, item 11)
+_NAMES = st.text(min_size=0, max_size=6)
+_TITLES = st.text(max_size=12)
+
+
+def _round_trip_document(a, b, c, point, title, kind, angle):
+    pairs = [
+        {"links": ["0", a], "kind": "R", "point": "A"},
+        {"links": [a, b], "kind": "R", "point": point},
+        {"links": [b, c], "kind": "R", "point": "C"},
+        {
+            "links": [c, "0"],
+            "kind": kind,
+            "point": "D",
+            **({"angle": angle} if kind == "P" else {}),
+        },
+    ]
+    return {
+        "name": title,
+        "ground": "0",
+        "drivers": [{"link": a, "omega": 10}],
+        "pairs": pairs,
+        "points": {"A": [0, 0], point: [0, 1], "C": {"xy": ["0.2*sqrt(3)", 1], "on": b}},
+        "loads": [{"kind": "force", "link": b, "point": "C", "values": [1, "500*sqrt(2)"]}],
+    }
+
+
+@settings(max_examples=150, deadline=None)
+@given(
+    a=_NAMES,
+    b=_NAMES,
+    c=_NAMES,
+    point=_NAMES,
+    title=_TITLES,
+    kind=st.sampled_from(["R", "P"]),
+    angle=st.floats(-1e150, 1e150, allow_nan=False),
+)
+def test_what_json_reads_the_edge_list_writes_and_reads_back_the_same(
+    a, b, c, point, title, kind, angle
+):
+    """Any names: the JSON reader refuses them with a named error, or the mechanism goes
+    to the edge list and back (and to JSON and back) unchanged. Issue 22: a link named
+    'a b' or a point named 'a=b' was read from JSON and written as a broken edge list."""
+    data = _round_trip_document(a, b, c, point, title, kind, angle)
+    try:
+        m = mechanism_from_dict(data)
+    except EdgeListError:
+        return
+    expected = mechanism_to_dict(m)
+    assert mechanism_to_dict(parse_edgelist(write_edgelist(m).splitlines())) == expected
+    assert mechanism_to_dict(mechanism_from_json(mechanism_to_json(m))) == expected
+
+
+@pytest.mark.parametrize(
+    ("change", "reason"),
+    [
+        pytest.param({"a": "slider block"}, "link name 'slider block' is not one word", id="space"),
+        pytest.param({"a": "a#b"}, "is not one word", id="hash"),
+        pytest.param({"a": "a=b"}, "is not one word", id="equals"),
+        pytest.param({"point": "P,Q"}, "point name 'P,Q' is not one word", id="comma"),
+        pytest.param({"a": ""}, "is not one word", id="empty"),
+        pytest.param({"a": "x\u2028y"}, "is not one word", id="line-separator"),
+        pytest.param({"title": "four-bar #2"}, "cannot be written on a 'name' line", id="title"),
+        pytest.param({"title": "two\nlines"}, "cannot be written on a 'name' line", id="title-lf"),
+        pytest.param({"a": "name"}, "first link cannot be named 'name'", id="name-first"),
+    ],
+)
+def test_names_the_edge_list_cannot_hold_are_refused_by_name(change, reason):
+    base = {"a": "1", "b": "2", "c": "3", "point": "B", "title": "t", "kind": "R", "angle": 0}
+    with pytest.raises(EdgeListError, match=reason):
+        mechanism_from_dict(_round_trip_document(**{**base, **change}))
+
+
+def test_a_gear_word_is_no_higher_pairs_point():
+    data = {"pairs": [{"links": ["0", "1"], "kind": "H", "point": "gear"}]}
+    with pytest.raises(EdgeListError, match="cannot be named 'gear'"):
+        mechanism_from_dict(data)

@@ -15,7 +15,13 @@ import pytest
 from kinematics.cli.main import main
 from structure.atlas import atlas
 from structure.batch import batch_items, classify_batch
-from structure.parallel import MissingExtraError, local_cluster, ordered_map
+from structure.parallel import (
+    Counted,
+    MissingExtraError,
+    check_scheduler,
+    local_cluster,
+    ordered_map,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 FIXTURE_FILES = sorted(str(p) for p in (ROOT / "fixtures").glob("*.edges"))
@@ -85,3 +91,38 @@ def test_local_cluster_has_every_worker_up_and_large_tasks_keep_the_order():
         assert list(ordered_map(_square, range(101), scheduler=address)) == [
             x * x for x in range(101)
         ]
+
+
+# ------------------------------------------------------------------ issue 22, item 7
+@pytest.mark.parametrize(
+    "address",
+    ["garbage", "tcp://host", "tcp://host:99999", "host:8786x", "http://host:8786", "tcp://:8786"],
+)
+@pytest.mark.parametrize(
+    "command", [["classify", "fixtures/fourbar.edges"], ["atlas", "--links", "6"]]
+)
+def test_a_bad_scheduler_address_is_a_usage_error_naming_the_form(capsys, command, address):
+    """``--scheduler garbage`` ended with exit 3 (ValueError from Dask)."""
+    assert main([*command, "--scheduler", address]) == 2
+    err = capsys.readouterr().err
+    assert f"--scheduler {address!r} is not a Dask scheduler's address" in err
+    assert "tcp://HOST:PORT" in err
+
+
+@pytest.mark.parametrize(
+    "address", ["tcp://10.0.0.5:8786", "tls://scheduler.example.org:8786", "[::1]:8786", "h:1"]
+)
+def test_good_scheduler_addresses_pass(address):
+    assert check_scheduler(address) == address
+
+
+def test_items_made_lazily_keep_their_order_in_processes():
+    made: list[int] = []
+
+    def items():
+        for k in range(40):
+            made.append(k)
+            yield k
+
+    assert list(ordered_map(abs, Counted(items(), 40), jobs=2, chunk=3)) == list(range(40))
+    assert made == list(range(40))

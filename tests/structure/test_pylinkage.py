@@ -213,6 +213,34 @@ def test_problems_of_the_linkage_format_are_named(change, reason):
     assert any(reason in p.reason for p in info.value.problems), info.value
 
 
+@pytest.mark.parametrize(
+    ("text", "reason"),
+    [
+        pytest.param(
+            json.dumps({**FOURBAR, "links": True}),
+            "'links' must be a list of link objects",
+            id="links-true",
+        ),
+        pytest.param(
+            json.dumps(FOURBAR).replace("[3.0, 0.0]", "[3" + "0" * 400 + ", 0.0]", 1),
+            "joint D: 'position' must be [x, y], finite numbers within ±1e+150",
+            id="401-digits",
+        ),
+        pytest.param(
+            json.dumps(FOURBAR).replace("[3.0, 0.0]", "[3e200, 0.0]", 1),
+            "joint D: 'position' must be [x, y], finite numbers within ±1e+150",
+            id="beyond-1e150",
+        ),
+    ],
+)
+def test_values_that_crashed_the_reader_are_named(text, reason):
+    """Issue 22, item 5: ``"links": true`` (TypeError) and a 401-digit integer
+    (OverflowError) ended ``assur convert`` with exit 3."""
+    with pytest.raises(EdgeListError) as info:
+        parse_pylinkage(text, "x.json")
+    assert any(reason in p.reason for p in info.value.problems), info.value
+
+
 def test_text_that_is_not_json_or_not_a_linkage_is_named():
     with pytest.raises(EdgeListError, match=r"line 2: invalid JSON"):
         parse_pylinkage('{"joints":\n ]', "x.json")
@@ -224,6 +252,7 @@ _scalars = st.one_of(
     st.none(),
     st.booleans(),
     st.integers(-3, 3),
+    st.sampled_from([10**400, -(10**400), 2**1024, 1e200]),  # issue 22: OverflowError before
     st.floats(allow_nan=True),
     st.sampled_from(["A", "B", "S", "ground", "driver", "link", "prismatic", "Crank", "Static"]),
 )
@@ -261,6 +290,7 @@ _values = st.recursive(
             "distance",
             "ground",
             "name",
+            "links",
         ]
     ),
     _values,

@@ -331,6 +331,9 @@ def test_a_bare_expression_is_read_whatever_its_extension(examples, tmp_path):
         ("mechanism: 'M[]'\ninput: 3\n", "'input' must be a list of [base joint, driven joint]"),
         ("mechanism: 'M[]'\n  bad: [\n", "invalid Pyslvs project"),
         ("mechanism: 2001-02-30\n", "invalid Pyslvs project: day is out of range for month"),
+        # issue 22, item 5: a RecursionError, exit 3, before
+        ("mechanism: " + "[" * 100_000 + "]" * 100_000 + "\n", "nested too deeply"),
+        ("mechanism: " + "{a: " * 50_000 + "1" + "}" * 50_000 + "\n", "nested too deeply"),
     ],
 )
 def test_bad_project_files_are_named(tmp_path, text, reason):
@@ -384,3 +387,21 @@ def test_damaged_examples_give_only_our_error(examples, name, where, how, noise)
     damaged = [text[:at] + text[at + 1 :], text[:at] + noise + text[at:], text[:at], noise][how]
     with contextlib.suppress(EdgeListError):
         mechanism_from_expression(damaged, "damaged", examples[name].inputs)
+
+
+@pytest.mark.parametrize(
+    ("text", "column", "what"),
+    [
+        ("M[J[R, P[1e200, 1], L[ground, L1]], J[R, P[0, 0], L[L1]]]", 10, "the x coordinate"),
+        ("M[J[R, P[0, -2e150], L[ground, L1]], J[R, P[0, 0], L[L1]]]", 13, "the y coordinate"),
+        ("M[J[RP, A[1e151], P[0, 0], L[ground, L1]], J[R, P[0, 1], L[L1]]]", 11, "the slot angle"),
+    ],
+)
+def test_numbers_beyond_the_limit_every_reader_takes_are_refused(text, column, what):
+    """Issue 22, item 5: coordinates beyond ±1e150 passed (LAPACK then printed DLASCL noise);
+    the limit is the edge list's and JSON's (MAX_MAGNITUDE)."""
+    with pytest.raises(EdgeListError) as info:
+        mechanism_from_expression(text, "big")
+    assert info.value.line_no == 1
+    assert f"column {column}: {what}" in info.value.reason
+    assert f"beyond ±{MAX_MAGNITUDE:g}" in info.value.reason

@@ -22,7 +22,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from kinematics import make_plan, solve_forces, solve_pose
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.results.serialization import forces_to_dict, state_to_dict
 from structure import analyze, parse_edgelist
 from structure.errors import MechanismError

@@ -201,14 +201,18 @@ def test_public_names_are_not_shadowed_by_submodules() -> None:
     import types
 
     import kinematics
-    import structure
 
-    roots = {"kinematics": kinematics, "structure": structure}
+    packages = sorted(
+        name for name, path in MODULES.items() if path.name == "__init__.py"
+    )  # every package, not only the two roots: ``kinematics.cli.main`` was once both
+    roots = {name: importlib.import_module(name) for name in packages}
     public = {
         package: {
             name: getattr(root, name)
             for name in (root.__all__ if hasattr(root, "__all__") else dir(root))
-            if not name.startswith("_") and not isinstance(getattr(root, name), types.ModuleType)
+            if not name.startswith("_")
+            and hasattr(root, name)
+            and not isinstance(getattr(root, name), types.ModuleType)
         }
         for package, root in roots.items()
     }

@@ -1,5 +1,5 @@
 """The ``assur`` command line, the one place that parses argv and prints."""
 
-from .main import main
+from .commands import main
 
 __all__ = ["main"]

@@ -3,7 +3,7 @@
 Building the parser imports no kinematics solver and no matplotlib: of the project it
 needs only the ``--explain`` formats and languages. A new command is one entry in
 :data:`COMMANDS` (its name, its help line and the function that adds its arguments),
-plus its runner in :data:`kinematics.cli.main.RUNNERS`.
+plus its runner in :data:`kinematics.cli.commands.RUNNERS`.
 """
 
 from __future__ import annotations

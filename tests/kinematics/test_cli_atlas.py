@@ -10,7 +10,7 @@ import sys
 import networkx as nx
 import pytest
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.cli.tables import progress_bar
 from structure.atlas import ATLAS_COLUMNS
 from structure.chains import chain_from_code, count_chains

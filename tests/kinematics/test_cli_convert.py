@@ -9,7 +9,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from structure.readwrite.edgelist import read_edgelist, write_edgelist
 from structure.readwrite.formats import read_mechanism
 from structure.readwrite.jsonformat import mechanism_to_json

@@ -14,7 +14,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.explain.worked import angle_of, explain_forces, explain_kinematics
 from kinematics.kinetostatics.forces import solve_forces
 from kinematics.kinetostatics.polygons import vector_equations

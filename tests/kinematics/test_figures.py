@@ -21,7 +21,7 @@ from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 from matplotlib.text import Annotation
 from PIL import Image
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.figures.animation import animate, turn_inputs
 from kinematics.figures.sheets import (
     acceleration_polygon,

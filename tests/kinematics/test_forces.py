@@ -11,7 +11,7 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.kinetostatics.forces import IndeterminateError, forces_over, solve_forces
 from kinematics.results.serialization import forces_to_dict
 from kinematics.solvers.exact import forces_exact

@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.solvers.plan import make_plan
 from kinematics.solvers.solve import AssemblyError
 from kinematics.solvers.sweep import parse_inputs, sweep

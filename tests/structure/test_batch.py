@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from structure.atlas import atlas, atlas_row_dict
 from structure.batch import BATCH_COLUMNS, BatchItem, batch_items, classify_batch, classify_item
 from structure.readwrite.edgelist import read_edgelist

@@ -13,7 +13,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from structure.explain import (
     Math,
     check_options,

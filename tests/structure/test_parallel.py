@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from structure.atlas import atlas
 from structure.batch import batch_items, classify_batch
 from structure.parallel import (

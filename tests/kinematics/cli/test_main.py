@@ -1,4 +1,4 @@
-"""The ``assur`` program itself (kinematics.cli.main): usage errors, --help, ``python -m``."""
+"""The ``assur`` program itself (kinematics.cli.commands): usage errors, --help, ``python -m``."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from kinematics.cli.main import RUNNERS
+from kinematics.cli.commands import RUNNERS
 from kinematics.cli.parser import COMMANDS
 from structure.explain.document import FORMATS
 
@@ -99,7 +99,7 @@ def test_classify_starts_without_the_solvers_or_matplotlib():
     """Issue 12: ``assur classify`` imports only the structure side and the CLI's cheap modules."""
     script = (
         "import sys\n"
-        "from kinematics.cli.main import main\n"
+        "from kinematics.cli.commands import main\n"
         f"assert main(['classify', {fixture('fourbar')!r}]) == 0\n"
         "print(' '.join(sorted(sys.modules)))\n"
     )
@@ -119,7 +119,7 @@ def test_classify_starts_without_the_solvers_or_matplotlib():
     assert kinematics <= {
         "kinematics.cli",
         "kinematics.cli.classify",
-        "kinematics.cli.main",
+        "kinematics.cli.commands",
         "kinematics.cli.output",
         "kinematics.cli.parser",
         "kinematics.cli.plotting",

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 
 from ...conftest import FIXTURES
 

@@ -30,7 +30,7 @@ from matplotlib.patches import Circle, FancyArrowPatch
 from matplotlib.text import Annotation
 from PIL import Image
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.figures.animation import animate
 from kinematics.figures.sheets import (
     acceleration_polygon,

@@ -19,7 +19,7 @@ from typing import Any
 
 import pytest
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from structure.readwrite.edgelist import read_edgelist
 
 from ...conftest import FIXTURES

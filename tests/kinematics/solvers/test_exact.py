@@ -19,7 +19,7 @@ import pytest
 import sympy
 from sympy import QQ, Rational, sqrt
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.errors import ExactTimeoutError, SingularPoseError
 from kinematics.kinetostatics.forces import solve_forces
 from kinematics.solvers import exact

@@ -16,7 +16,7 @@ import math
 import numpy as np
 import pytest
 
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.errors import AssemblyModeError
 from kinematics.solvers.plan import make_plan, parse_flip
 from kinematics.solvers.solve import assembly_modes, solve_pose

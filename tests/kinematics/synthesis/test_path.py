@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from kinematics import make_plan, sweep
-from kinematics.cli.main import main
+from kinematics.cli.commands import main
 from kinematics.errors import InfeasibleDesignError, SynthesisError
 from kinematics.synthesis.linkages import (
     PARAMETERS,

@@ -29,6 +29,39 @@ FORCES_TABLE = "forces.toml"
 GEARS_TABLE = "gears.toml"
 
 
+#: the fixtures that the default run checks one by one where a test runs over every fixture
+#: and each costs a drawing or a page: one of each kind (a four-bar, a slider, a slotted link, a
+#: triad, a class IV group, two drivers, loads, a cam, gears, a long linkage); the others run
+#: in the slow run (python -m pytest -m slow), as CI does
+SAMPLE = (
+    "ch1_1_10a_peaucellier",
+    "cam_flat_follower",
+    "cam_roller_follower",
+    "ch3_3_4_fourbar",
+    "ch3_3_7_sieve",
+    "class4_group",
+    "crank_slider",
+    "eightbar_triad",
+    "exam_1_slotted_link",
+    "exam_2_planetary",
+    "fivebar_two_drivers",
+    "gear_pair",
+    "jansen",
+    "klann",
+)
+
+
+def sampled(stems: list, sample: tuple[str, ...] = SAMPLE, stem=lambda s: s) -> list:
+    """``stems`` as parameters: those of ``sample`` in the default run, the rest slow.
+
+    ``stem`` gives an item's fixture name (a path's ``.stem``).
+    """
+    return [
+        pytest.param(item, id=stem(item), marks=() if stem(item) in sample else pytest.mark.slow)
+        for item in stems
+    ]
+
+
 def expected_table(names: tuple[str, ...] = STRUCTURE_TABLES) -> dict[str, dict]:
     """Expected answers from the named fixture tables, keyed by file stem."""
     table: dict[str, dict] = {}

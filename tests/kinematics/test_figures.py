@@ -41,6 +41,8 @@ from structure.readwrite.edgelist import parse_edgelist, read_edgelist
 from structure.report import analyze
 from structure.rigidity.constraints import sketch_problems
 
+from ..conftest import sampled
+
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
@@ -148,7 +150,7 @@ def _sketched() -> list[Path]:
     return out
 
 
-@pytest.mark.parametrize("path", _sketched(), ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", sampled(_sketched(), stem=lambda p: p.stem))
 def test_fixture_figures(path: Path, tmp_path: Path) -> None:
     report, plan, state = _solved(path)
     m = plan.mechanism

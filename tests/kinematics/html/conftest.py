@@ -41,31 +41,6 @@ SECTION_IDS = [
     "synthesis",
     "worked",
 ]
-#: the fixtures whose pages the default run checks, one of each kind of page: no coordinates,
-#: a whole turn, a stretch, loads, inertia, a triad, two drivers, a cam, gears; every other
-#: fixture's page is checked by the slow run (python -m pytest -m slow), as CI does
-SAMPLE = (
-    "ch1_1_10a_peaucellier",
-    "cam_flat_follower",
-    "ch3_3_4_fourbar",
-    "ch3_3_7_sieve",
-    "eightbar_triad",
-    "exam_1_slotted_link",
-    "exam_2_planetary",
-    "fivebar_two_drivers",
-    "jansen",
-    "klann",
-)
-
-
-def sampled(stems: list[str]) -> list:
-    """``stems`` as parameters: those of :data:`SAMPLE` in the default run, the rest slow."""
-    return [
-        pytest.param(stem, id=stem, marks=() if stem in SAMPLE else pytest.mark.slow)
-        for stem in stems
-    ]
-
-
 def run_cli(*argv: str) -> tuple[int, str, str]:
     """One run of ``assur`` in this process: exit code, stdout, stderr."""
     out, err = io.StringIO(), io.StringIO()

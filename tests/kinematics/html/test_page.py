@@ -25,8 +25,8 @@ from structure.meshes import meshes
 from structure.readwrite.edgelist import read_edgelist
 from structure.report import analyze
 
-from ...conftest import FIXTURES
-from .conftest import SECTION_IDS, SKETCHED, STEMS, STEPS, cli_json, json_at, sampled
+from ...conftest import FIXTURES, sampled
+from .conftest import SECTION_IDS, SKETCHED, STEMS, STEPS, cli_json, json_at
 
 #: the namespaces a page may name (they are identifiers, never fetched)
 NAMESPACES = {
